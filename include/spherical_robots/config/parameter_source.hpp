@@ -1,0 +1,25 @@
+#pragma once
+// A read-only view of nested parameters ("gains/3R/k_theta"), so one parser serves the YAML files
+// (sphere_sim, tests) and the ROS parameter server (nodes).
+
+#include <optional>
+#include <string>
+
+namespace spherical_robots::config {
+
+class ParameterSource {
+ public:
+  virtual ~ParameterSource() = default;
+  /// The number at key, nullopt if absent. @throw std::invalid_argument if present but not a number.
+  virtual std::optional<double> number(const std::string& key) const = 0;
+  /// The string at key, nullopt if absent. @throw std::invalid_argument if present but not a string.
+  virtual std::optional<std::string> text(const std::string& key) const = 0;
+  /// Where the values come from, for error messages ("config/terrain.yaml", "/robot1/controller").
+  virtual std::string origin() const = 0;
+};
+
+/// The number at key, or fallback if absent; throws std::invalid_argument naming the key, the
+/// value and the origin if the value is not finite.
+double finiteNumber(const ParameterSource& source, const std::string& key, double fallback);
+
+}  // namespace spherical_robots::config

@@ -1,0 +1,45 @@
+#pragma once
+// The terrain scenario's parameters (config/terrain.yaml): surface, paths, gains, RS tilt limit.
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "spherical_robots/config/parameter_source.hpp"
+#include "spherical_robots/terrain/pure_pursuit.hpp"
+#include "spherical_robots/terrain/reference_path.hpp"
+#include "spherical_robots/terrain/robot_type.hpp"
+#include "spherical_robots/terrain/surface.hpp"
+
+namespace spherical_robots::config {
+
+struct SurfaceSpec {
+  std::string type = "cosine";  ///< "cosine" (eq 59) | "plane" | "tilted_plane"
+  double amplitude = 0.2;       ///< cosine a [m]
+  double frequency = 2.0;       ///< cosine w [rad/m]
+  double slope_x = 0.0;         ///< plane g_x [-]
+  double slope_y = 0.0;         ///< plane g_y [-]
+  double offset = 0.0;          ///< plane z0 [m]
+};
+
+struct TerrainConfig {
+  SurfaceSpec surface;
+  double circle_radius = 2.0;         ///< [m]
+  double circle_angular_rate = 0.05;  ///< [rad/s]
+  double diamond_half_diagonal = 2.0; ///< [m]
+  double diamond_speed = 0.1;         ///< [m/s]
+  double tilt_limit = 1.0471975511965976;  ///< RS |phi| limit [rad], pi/3
+  std::map<terrain::RobotType, terrain::PursuitGains> gains;
+};
+
+/// Reads keys under "terrain/" (see config/terrain.yaml); absent keys keep their defaults.
+/// @throw std::invalid_argument naming the key, its value and the source on a bad value.
+TerrainConfig loadTerrainConfig(const ParameterSource& source);
+
+/// @throw std::invalid_argument on an unknown type or bad numbers.
+std::unique_ptr<terrain::Surface> makeSurface(const SurfaceSpec& spec);
+
+/// name: "circle" | "diamond". @throw std::invalid_argument on an unknown name.
+std::unique_ptr<terrain::ReferencePath> makePath(const std::string& name, const TerrainConfig& config);
+
+}  // namespace spherical_robots::config

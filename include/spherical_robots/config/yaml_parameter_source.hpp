@@ -1,0 +1,23 @@
+#pragma once
+#include <yaml-cpp/yaml.h>
+
+#include "spherical_robots/config/parameter_source.hpp"
+
+namespace spherical_robots::config {
+
+/// Parameters from a YAML file; keys are '/'-separated paths into its maps.
+class YamlParameterSource final : public ParameterSource {
+ public:
+  /// @throw std::invalid_argument if the file cannot be read or parsed (message names the file).
+  explicit YamlParameterSource(const std::string& path);
+  std::optional<double> number(const std::string& key) const override;
+  std::optional<std::string> text(const std::string& key) const override;
+  std::string origin() const override { return path_; }
+
+ private:
+  YAML::Node find(const std::string& key) const;
+  std::string path_;
+  YAML::Node root_;
+};
+
+}  // namespace spherical_robots::config

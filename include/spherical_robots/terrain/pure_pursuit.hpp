@@ -1,0 +1,61 @@
+#pragma once
+// Pure-pursuit tracking for the four robot types (paper eqs 53-58), in the sign convention of
+// docs/conventions.md.
+
+#include <Eigen/Core>
+
+#include "spherical_robots/terrain/reference_path.hpp"
+#include "spherical_robots/terrain/robot_type.hpp"
+#include "spherical_robots/terrain/terrain_kinematics.hpp"
+
+namespace spherical_robots::terrain {
+
+/// Gains; each type reads only its own (defaults in config/terrain.yaml).
+struct PursuitGains {
+  double k_e = 0.5;  ///< error normalisation [m] (eqs 55-58)
+  // 3R (eq 55) and RT (eq 57)
+  double k_theta = 2.0;
+  double k_phi1 = 2.0;
+  double k_phi2 = 0.3;
+  double k_psi = 1.0;
+  // 2R (eq 56)
+  double k_theta1 = 3.0;
+  double k_theta2 = 0.3;
+  // RS (eq 58)
+  double k_alpha = 0.5;
+  double k_phi = 2.0;
+};
+
+/// Throws std::invalid_argument naming the first gain that is non-finite or negative, or k_e <= 0.
+void validate(const PursuitGains& gains);
+
+/// The tracking error of eqs 53-54, with zeta signed.
+struct TrackingError {
+  Eigen::Vector3d error = Eigen::Vector3d::Zero();  ///< e_t = p_d - P0 [m] (eq 53)
+  double norm = 0.0;                                ///< |e_t| [m]
+  /// Angle [rad] in (-pi, pi] from h to e_t's projection on the tangent plane, right-handed
+  /// about n: positive when the target is to the left (eq 54 gives only its magnitude).
+  double zeta = 0.0;
+};
+
+TrackingError trackingError(const ContactGeometry& geometry, const Eigen::Vector3d& desired);
+
+class PurePursuitController {
+ public:
+  /// @throw std::invalid_argument on bad gains or radius.
+  PurePursuitController(RobotType type, const PursuitGains& gains, double radius);
+
+  /// Drive-rate set-points from the error and the desired point's 3D velocity
+  /// (feed-forward |p_d'| / R, eqs 55, 57, 58).
+  DriveRates command(const TrackingError& error, const Eigen::Vector3d& desired_velocity) const;
+
+  RobotType type() const { return type_; }
+  const PursuitGains& gains() const { return gains_; }
+
+ private:
+  RobotType type_;
+  PursuitGains gains_;
+  double radius_;
+};
+
+}  // namespace spherical_robots::terrain

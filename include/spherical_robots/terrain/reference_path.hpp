@@ -1,0 +1,63 @@
+#pragma once
+// Desired paths of the paper's section 6, given by their projection on the XY plane and lifted
+// onto the terrain: p_d(t) = (x_d, y_d, f(x_d, y_d)).
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+
+#include "spherical_robots/terrain/surface.hpp"
+
+namespace spherical_robots::terrain {
+
+/// A planar reference (x_d(t), y_d(t)) [m] and its velocity [m/s].
+class ReferencePath {
+ public:
+  virtual ~ReferencePath() = default;
+  virtual Eigen::Vector2d position(double t) const = 0;
+  virtual Eigen::Vector2d velocity(double t) const = 0;
+  /// Time [s] after which the path repeats.
+  virtual double period() const = 0;
+  virtual std::string describe() const = 0;
+};
+
+/// x_d = r cos(w t), y_d = r sin(w t): the circle the paper's eq 60 means (it prints cos twice).
+class CirclePath final : public ReferencePath {
+ public:
+  /// @param radius r [m] > 0, @param angular_rate w [rad/s] != 0. @throw std::invalid_argument
+  CirclePath(double radius, double angular_rate);
+  Eigen::Vector2d position(double t) const override;
+  Eigen::Vector2d velocity(double t) const override;
+  double period() const override;
+  std::string describe() const override;
+
+ private:
+  double radius_;
+  double angular_rate_;
+};
+
+/// The diamond (d,0) -> (0,d) -> (-d,0) -> (0,-d) -> (d,0), counter-clockwise from (d,0) at t = 0,
+/// at a constant XY speed. At a vertex the velocity is that of the edge being entered.
+class DiamondPath final : public ReferencePath {
+ public:
+  /// @param half_diagonal d [m] > 0, @param speed [m/s] > 0. @throw std::invalid_argument
+  DiamondPath(double half_diagonal, double speed);
+  Eigen::Vector2d position(double t) const override;
+  Eigen::Vector2d velocity(double t) const override;
+  double period() const override;
+  std::string describe() const override;
+
+ private:
+  double half_diagonal_;
+  double speed_;
+};
+
+/// A desired point on the terrain and its 3D velocity.
+struct DesiredPoint {
+  Eigen::Vector3d position;  ///< p_d [m]
+  Eigen::Vector3d velocity;  ///< (x_d', y_d', f_x x_d' + f_y y_d') [m/s]
+};
+
+DesiredPoint liftOntoSurface(const ReferencePath& path, const Surface& surface, double t);
+
+}  // namespace spherical_robots::terrain

@@ -1,0 +1,39 @@
+#pragma once
+// The four kinematic classes of spherical robot (paper section 4) and their drive rates.
+
+#include <array>
+#include <string>
+
+namespace spherical_robots::terrain {
+
+enum class RobotType {
+  ThreeAxisRolling,    ///< 3R: rolls about l and h and turns about n (eqs 32-35)
+  TwoAxisRolling,      ///< 2R: rolls about l and h, never turns (eqs 36-37)
+  RollingAndTurning,   ///< RT: rolls about l and turns about n (eqs 38-39)
+  RollingAndSteering,  ///< RS: rolls about its tilted axle, steers by tilting (eqs 40-50)
+};
+
+/// "3R", "2R", "RT", "RS" <-> RobotType. @throw std::invalid_argument on an unknown name.
+RobotType robotTypeFromString(const std::string& name);
+std::string toString(RobotType type);
+
+/// Drive rates [rad/s]. roll_rate is theta_dot (about l) or, for RS, alpha_dot (about the tilted
+/// axle); lateral_rate is phi_dot (about h: a sideways roll, or the RS tilt rate); turn_rate is
+/// psi_dot (about n). For RS, turn_rate is not commanded: it follows from eq 44.
+struct DriveRates {
+  double roll_rate = 0.0;
+  double lateral_rate = 0.0;
+  double turn_rate = 0.0;
+};
+
+/// Which of (roll_rate, lateral_rate, turn_rate) the type actuates.
+std::array<bool, 3> actuatedRates(RobotType type);
+
+/// Names of the type's actuated rates, in DriveRates order, e.g. {"theta", "phi", "psi"}; these
+/// are the actuator (joint) names on actuators/command and actuators/state.
+std::array<const char*, 3> rateNames(RobotType type);
+
+/// The rates with every rate the type does not actuate set to 0 (RS turn_rate included).
+DriveRates keepActuated(RobotType type, const DriveRates& rates);
+
+}  // namespace spherical_robots::terrain

@@ -1,0 +1,67 @@
+#pragma once
+// Terrain surfaces z = f(x, y) (paper eq 3) with the derivatives the rolling kinematics need.
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+
+namespace spherical_robots::terrain {
+
+/// A smooth terrain z = f(x, y), heights in [m], in the world frame.
+class Surface {
+ public:
+  virtual ~Surface() = default;
+  /// f(x, y) [m].
+  virtual double height(double x, double y) const = 0;
+  /// (f_x, f_y) [-].
+  virtual Eigen::Vector2d gradient(double x, double y) const = 0;
+  /// [[f_xx, f_xy], [f_xy, f_yy]] [1/m].
+  virtual Eigen::Matrix2d hessian(double x, double y) const = 0;
+  /// An upper bound [1/m] over the whole surface of the largest principal curvature, measured
+  /// positive where the surface is concave up (a valley that a sphere resting on top sits in).
+  virtual double maxPrincipalCurvature() const = 0;
+  /// A short human-readable description, e.g. "cosine a=0.2 m w=2 rad/m".
+  virtual std::string describe() const = 0;
+};
+
+/// Paper eq 59: z = a (cos(w x) + cos(w y) - 2).
+class CosineSurface final : public Surface {
+ public:
+  /// @param amplitude a [m], @param frequency w [rad/m] > 0. @throw std::invalid_argument
+  CosineSurface(double amplitude, double frequency);
+  double height(double x, double y) const override;
+  Eigen::Vector2d gradient(double x, double y) const override;
+  Eigen::Matrix2d hessian(double x, double y) const override;
+  double maxPrincipalCurvature() const override;
+  std::string describe() const override;
+
+ private:
+  double amplitude_;
+  double frequency_;
+};
+
+/// z = z0 + g_x x + g_y y: a horizontal plane (g = 0) or a tilted one.
+class PlaneSurface final : public Surface {
+ public:
+  /// @param slope_x g_x [-], @param slope_y g_y [-], @param offset z0 [m]. @throw std::invalid_argument
+  PlaneSurface(double slope_x, double slope_y, double offset);
+  double height(double x, double y) const override;
+  Eigen::Vector2d gradient(double x, double y) const override;
+  Eigen::Matrix2d hessian(double x, double y) const override;
+  double maxPrincipalCurvature() const override;
+  std::string describe() const override;
+
+ private:
+  Eigen::Vector2d slope_;
+  double offset_;
+};
+
+/// Principal curvatures (k_min, k_max) [1/m] of z = f(x, y) at (x, y), positive where concave up,
+/// from the shape operator I^-1 II with I, II the first and second fundamental forms.
+Eigen::Vector2d principalCurvatures(const Surface& surface, double x, double y);
+
+/// Throws std::invalid_argument unless a sphere of radius [m] keeps single-point contact
+/// everywhere on the surface (paper assumption 3): radius * maxPrincipalCurvature() < 1.
+void requireSinglePointContact(const Surface& surface, double radius);
+
+}  // namespace spherical_robots::terrain

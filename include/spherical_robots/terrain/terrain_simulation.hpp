@@ -1,0 +1,74 @@
+#pragma once
+// Closed-loop batch run of a terrain robot: classical fixed-step RK4 (Boost.Odeint) with the
+// pure-pursuit controller evaluated at every stage (continuous-time feedback).
+
+#include <array>
+#include <limits>
+
+#include "spherical_robots/terrain/pure_pursuit.hpp"
+#include "spherical_robots/terrain/reference_path.hpp"
+#include "spherical_robots/terrain/terrain_kinematics.hpp"
+
+namespace spherical_robots::terrain {
+
+/// Everything observable at one instant of a closed-loop run.
+struct TerrainSample {
+  double t = 0.0;
+  TerrainState state;
+  ContactGeometry geometry;
+  DesiredPoint desired;
+  TrackingError error;
+  DriveRates rates;  ///< realised drive rates [rad/s]
+};
+
+class TerrainSimulation {
+ public:
+  /// The kinematics, controller and path must outlive the simulation.
+  TerrainSimulation(const TerrainKinematics& kinematics, const PurePursuitController& controller,
+                    const ReferencePath& path, const TerrainState& initial);
+
+  /// Advances by dt [s] > 0 with one RK4 step. @throw std::invalid_argument on a bad dt,
+  /// std::runtime_error if the state stops being finite.
+  void step(double dt);
+
+  TerrainSample sample() const;
+  double time() const { return t_; }
+  const TerrainState& state() const { return state_; }
+
+  /// The closed-loop vector field at (state, t): the controller's command realised by the robot.
+  TerrainSample evaluate(const TerrainState& state, double t) const;
+
+ private:
+  const TerrainKinematics& kinematics_;
+  const PurePursuitController& controller_;
+  const ReferencePath& path_;
+  TerrainState state_;
+  double t_ = 0.0;
+};
+
+/// The tracking figures the paper reports: time of the first |e_t| below a threshold, and the
+/// mean and max of |e_t| from a settling time on.
+class TrackingSummary {
+ public:
+  /// @param threshold [m] (0.1 in the paper's sense of "converged"), @param settle_time [s] (40).
+  TrackingSummary(double threshold, double settle_time);
+  void add(double t, double error_norm);
+
+  /// NaN if |e_t| never went below the threshold.
+  double timeToConverge() const { return time_to_converge_; }
+  /// NaN if no sample had t >= settle_time.
+  double meanAfterSettling() const;
+  double maxAfterSettling() const;
+  double threshold() const { return threshold_; }
+  double settleTime() const { return settle_time_; }
+
+ private:
+  double threshold_;
+  double settle_time_;
+  double time_to_converge_ = std::numeric_limits<double>::quiet_NaN();
+  double sum_after_ = 0.0;
+  double max_after_ = 0.0;
+  long count_after_ = 0;
+};
+
+}  // namespace spherical_robots::terrain

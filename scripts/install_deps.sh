@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package the build, the stacks and the tests need (run as root).
+set -euo pipefail
+packages=(
+  # build
+  build-essential cmake catkin colcon python3-colcon-ros python3-colcon-cmake
+  python3-colcon-test-result python3-colcon-output python3-colcon-parallel-executor
+  python3-colcon-recursive-crawl python3-colcon-package-information python3-colcon-library-path
+  python3-colcon-defaults python3-colcon-pkg-config python3-colcon-package-selection
+  python3-catkin-pkg ros-message-generation ros-message-runtime
+  # ROS libraries and messages
+  ros-base-dev libtf2-ros-dev libtf2-eigen-dev libtf2-geometry-msgs-dev libtf2-msgs-dev
+  libnav-msgs-dev libvisualization-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev
+  libdiagnostic-msgs-dev libstd-msgs-dev libdiagnostic-updater-dev liburdf-dev
+  # core libraries
+  libeigen3-dev libboost-dev libyaml-cpp-dev
+  # tests and benchmarks
+  libgtest-dev libgmock-dev googletest libbenchmark-dev librostest-dev python3-rostest
+  # running stacks, bags, plots, rviz
+  python3-rospy python3-roslaunch python3-rosbag python3-rosnode python3-rostopic rosbash
+  python3-nav-msgs python3-geometry-msgs python3-sensor-msgs python3-diagnostic-msgs
+  python3-std-msgs python3-tf2-ros python3-tf2-msgs python3-visualization-msgs
+  ros-robot-state-publisher rviz xvfb xauth x11-utils imagemagick
+  python3-numpy python3-matplotlib
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "[install_deps] installing ${#missing[@]} Debian packages"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" > /tmp/spherical_robots_apt.log 2>&1 \
+    || { tail -30 /tmp/spherical_robots_apt.log; exit 1; }
+fi
