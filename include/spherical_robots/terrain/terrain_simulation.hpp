@@ -2,6 +2,7 @@
 // Closed-loop batch run of a terrain robot: classical fixed-step RK4 (Boost.Odeint) with the
 // pure-pursuit controller evaluated at every stage (continuous-time feedback).
 
+#include <Eigen/Geometry>
 #include <array>
 #include <limits>
 
@@ -45,6 +46,16 @@ class TerrainSimulation {
   TerrainState state_;
   double t_ = 0.0;
 };
+
+/// One RK4 step [s] of the open-loop kinematics with rates held constant over the step, as a plant
+/// fed by measured actuator rates integrates them. @throw std::invalid_argument on a bad dt.
+TerrainState stepWithHeldRates(const TerrainKinematics& kinematics, const TerrainState& state,
+                               const DriveRates& rates, double dt);
+
+/// The shell orientation (world <- body) after turning at omega [rad/s, world frame] for dt [s]
+/// (exact for constant omega: q <- exp(omega dt / 2) q).
+Eigen::Quaterniond advanceOrientation(const Eigen::Quaterniond& orientation,
+                                      const Eigen::Vector3d& omega, double dt);
 
 /// The tracking figures the paper reports: time of the first |e_t| below a threshold, and the
 /// mean and max of |e_t| from a settling time on.
