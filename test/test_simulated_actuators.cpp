@@ -1,0 +1,296 @@
+// SimulatedActuators against closed forms: constant-acceleration ramps, clamps, trapezoid
+// positions, the command-timeout watchdog, rejected commands, e-stop.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "spherical_robots/hardware/simulated_actuators.hpp"
+
+using spherical_robots::hardware::ActuatorLimits;
+using spherical_robots::hardware::SimulatedActuators;
+
+namespace {
+
+constexpr double kTol = 1e-12;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Three actuators with max_velocity 10 rad/s, max_acceleration 20 rad/s^2, timeout 0.5 s; the
+// clock starts at t = 0.
+SimulatedActuators makeActuators(double max_velocity = 10.0, double max_acceleration = 20.0,
+                                 double timeout = 0.5) {
+  SimulatedActuators actuators({"theta", "phi", "psi"},
+                               std::vector<ActuatorLimits>(3, {max_velocity, max_acceleration}),
+                               timeout);
+  actuators.update(0.0);
+  return actuators;
+}
+
+// Steps the clock from `from` to `to` in increments of dt (the last one may be shorter).
+void stepTo(SimulatedActuators& actuators, double from, double to, double dt) {
+  for (double t = from + dt; t < to; t += dt) actuators.update(t);
+  actuators.update(to);
+}
+
+// Position of an actuator starting at rest at t = 0 with a step set-point v (|v| <= max_velocity)
+// under acceleration limit a: v(t) = a t up to T = |v|/a, then v.
+double rampPosition(double v, double a, double t) {
+  const double ramp_time = std::abs(v) / a;
+  const double sign = v >= 0.0 ? 1.0 : -1.0;
+  if (t <= ramp_time) return sign * 0.5 * a * t * t;
+  return sign * 0.5 * a * ramp_time * ramp_time + v * (t - ramp_time);
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+std::string constructionError(std::vector<std::string> names, std::vector<ActuatorLimits> limits,
+                              double timeout) {
+  try {
+    SimulatedActuators(std::move(names), std::move(limits), timeout);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return {};
+}
+
+}  // namespace
+
+TEST(SimulatedActuators, StartsAtRest) {
+  auto actuators = makeActuators();
+  actuators.update(1.0);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(actuators.velocities()[i], 0.0);
+    EXPECT_EQ(actuators.positions()[i], 0.0);
+  }
+  EXPECT_FALSE(actuators.hasCommand());
+  EXPECT_FALSE(actuators.timedOut());
+}
+
+TEST(SimulatedActuators, StepSetPointRampsAtExactlyMaxAcceleration) {
+  auto actuators = makeActuators(10.0, 20.0, 100.0);
+  ASSERT_EQ(actuators.command({"theta", "phi"}, {5.0, -3.0}, 0.0), "");
+  for (double t : {0.01, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 1.0}) {
+    actuators.update(t);
+    EXPECT_NEAR(actuators.velocities()[0], std::min(20.0 * t, 5.0), kTol) << "t = " << t;
+    EXPECT_NEAR(actuators.velocities()[1], -std::min(20.0 * t, 3.0), kTol) << "t = " << t;
+    EXPECT_EQ(actuators.velocities()[2], 0.0);
+  }
+}
+
+TEST(SimulatedActuators, SetPointClampedAtMaxVelocity) {
+  auto actuators = makeActuators(10.0, 20.0, 100.0);
+  ASSERT_EQ(actuators.command({"theta", "psi"}, {100.0, -1e9}, 0.0), "");
+  EXPECT_EQ(actuators.setpoints()[0], 10.0);
+  EXPECT_EQ(actuators.setpoints()[2], -10.0);
+  stepTo(actuators, 0.0, 2.0, 0.01);
+  EXPECT_EQ(actuators.velocities()[0], 10.0);
+  EXPECT_EQ(actuators.velocities()[2], -10.0);
+  // Ramp to the clamp in 10/20 = 0.5 s, then 1.5 s at 10 rad/s.
+  EXPECT_NEAR(actuators.positions()[0], 0.5 * 20.0 * 0.25 + 10.0 * 1.5, 1e-9);
+}
+
+TEST(SimulatedActuators, PositionIsTheTrapezoidIntegralWhateverTheStep) {
+  for (double dt : {0.001, 0.0137, 0.1, 0.4, 3.0}) {
+    auto actuators = makeActuators(10.0, 20.0, 100.0);
+    ASSERT_EQ(actuators.command({"theta", "phi", "psi"}, {7.0, -2.5, 10.0}, 0.0), "");
+    double t = 0.0;
+    while (t < 3.0) {
+      t = std::min(t + dt, 3.0);
+      actuators.update(t);
+      EXPECT_NEAR(actuators.positions()[0], rampPosition(7.0, 20.0, t), 1e-9) << "dt " << dt;
+      EXPECT_NEAR(actuators.positions()[1], rampPosition(-2.5, 20.0, t), 1e-9) << "dt " << dt;
+      EXPECT_NEAR(actuators.positions()[2], rampPosition(10.0, 20.0, t), 1e-9) << "dt " << dt;
+    }
+  }
+}
+
+TEST(SimulatedActuators, SetPointChangeRampsFromTheCurrentVelocity) {
+  auto actuators = makeActuators(10.0, 20.0, 100.0);
+  ASSERT_EQ(actuators.command({"theta"}, {4.0}, 0.0), "");
+  actuators.update(1.0);
+  ASSERT_EQ(actuators.command({"theta"}, {-4.0}, 1.0), "");
+  actuators.update(1.2);
+  EXPECT_NEAR(actuators.velocities()[0], 0.0, kTol);
+  actuators.update(1.5);
+  EXPECT_NEAR(actuators.velocities()[0], -4.0, kTol);
+  // 3.6 rad by t = 1 (0.2 s ramp, 0.8 s at 4 rad/s); the reversal 1.0..1.4 s is symmetric
+  // about v = 0 (no net travel); then 0.1 s at -4 rad/s.
+  EXPECT_NEAR(actuators.positions()[0], 3.6 - 0.4, 1e-12);
+}
+
+// diff_drive_controller's classic: a 1 rad/s command, then silence; with a 0.5 s timeout the
+// set-point drops to 0 at t = 0.5 and the ramp down takes v/a.
+TEST(SimulatedActuators, WatchdogBringsActuatorsToRestAfterTimeout) {
+  const double v = 1.0, a = 20.0, timeout = 0.5;
+  for (double dt : {0.001, 0.01, 0.07, 2.0}) {
+    auto actuators = makeActuators(10.0, a, timeout);
+    ASSERT_EQ(actuators.command({"theta"}, {v}, 0.0), "");
+    actuators.update(timeout - 1e-9);
+    EXPECT_FALSE(actuators.timedOut());
+    EXPECT_NEAR(actuators.velocities()[0], v, kTol);
+    stepTo(actuators, timeout - 1e-9, 2.0, dt);
+    EXPECT_TRUE(actuators.timedOut()) << "dt " << dt;
+    EXPECT_EQ(actuators.velocities()[0], 0.0) << "dt " << dt;
+    EXPECT_EQ(actuators.setpoints()[0], 0.0);
+    // Ramp up loses v^2/(2a), ramp down gains it back: travel is exactly v * timeout, and in any
+    // case below the bound v (timeout + v/a).
+    EXPECT_NEAR(actuators.positions()[0], v * timeout, 1e-9) << "dt " << dt;
+    EXPECT_LT(actuators.positions()[0], v * (timeout + v / a));
+  }
+}
+
+TEST(SimulatedActuators, WatchdogRampDownFollowsTheClosedForm) {
+  auto actuators = makeActuators(10.0, 20.0, 0.5);
+  ASSERT_EQ(actuators.command({"phi"}, {8.0}, 0.0), "");
+  // Up to 8 rad/s by 0.4 s, held to 0.5 s, down at 20 rad/s^2 until 0.9 s.
+  actuators.update(0.6);
+  EXPECT_NEAR(actuators.velocities()[1], 8.0 - 20.0 * 0.1, kTol);
+  actuators.update(0.9);
+  EXPECT_NEAR(actuators.velocities()[1], 0.0, kTol);
+  EXPECT_NEAR(actuators.positions()[1], 0.5 * 8.0 * 0.4 + 8.0 * 0.1 + 0.5 * 8.0 * 0.4, 1e-12);
+}
+
+TEST(SimulatedActuators, FreshCommandsKeepTheWatchdogQuiet) {
+  auto actuators = makeActuators(10.0, 20.0, 0.5);
+  for (double t = 0.0; t < 5.0; t += 0.4) {
+    ASSERT_EQ(actuators.command({"theta"}, {2.0}, t), "");
+    actuators.update(t + 0.399);
+    EXPECT_FALSE(actuators.timedOut()) << "t = " << t;
+    EXPECT_NEAR(actuators.velocities()[0], 2.0, kTol);
+  }
+  // A command after a timeout is accepted and clears it.
+  actuators.update(10.0);
+  ASSERT_TRUE(actuators.timedOut());
+  ASSERT_EQ(actuators.command({"theta"}, {1.0}, 10.0), "");
+  EXPECT_FALSE(actuators.timedOut());
+  actuators.update(10.2);
+  EXPECT_NEAR(actuators.velocities()[0], 1.0, kTol);
+}
+
+TEST(SimulatedActuators, BadCommandsAreRejectedWithAReasonAndChangeNothing) {
+  struct Case {
+    std::vector<std::string> names;
+    std::vector<double> velocities;
+    double t;
+    std::string reason;
+  };
+  const std::vector<Case> cases = {
+      {{"theta"}, {kNaN}, 0.2, "non-finite"},
+      {{"theta", "phi"}, {1.0, kInf}, 0.2, "non-finite"},
+      {{"theta"}, {-kInf}, 0.2, "non-finite"},
+      {{"theta", "bogus"}, {1.0, 2.0}, 0.2, "unknown actuator 'bogus'"},
+      {{"theta", "phi"}, {1.0}, 0.2, "2 names but 1 velocities"},
+      {{"theta"}, {}, 0.2, "1 names but 0 velocities"},
+      {{}, {}, 0.2, "no actuator"},
+      {{"phi", "phi"}, {1.0, 1.0}, 0.2, "named twice"},
+      {{"theta"}, {1.0}, kNaN, "non-finite command time"},
+  };
+  for (const auto& c : cases) {
+    auto actuators = makeActuators(10.0, 20.0, 0.5);
+    ASSERT_EQ(actuators.command({"theta", "phi"}, {3.0, -1.0}, 0.0), "");
+    actuators.update(0.1);
+    const auto setpoints = actuators.setpoints();
+    const auto velocities = actuators.velocities();
+    const auto positions = actuators.positions();
+    const std::string reason = actuators.command(c.names, c.velocities, c.t);
+    EXPECT_TRUE(contains(reason, c.reason)) << "got '" << reason << "', want '" << c.reason << "'";
+    EXPECT_EQ(actuators.setpoints(), setpoints) << c.reason;
+    EXPECT_EQ(actuators.velocities(), velocities) << c.reason;
+    EXPECT_EQ(actuators.positions(), positions) << c.reason;
+    // Nor did it refresh the watchdog: the first command's deadline (0.5 s) still holds.
+    actuators.update(0.5);
+    EXPECT_TRUE(actuators.timedOut()) << c.reason;
+  }
+}
+
+TEST(SimulatedActuators, TimeGoingBackwardsIsIgnored) {
+  auto actuators = makeActuators(10.0, 20.0, 100.0);
+  ASSERT_EQ(actuators.command({"theta"}, {2.0}, 0.0), "");
+  actuators.update(1.0);
+  const double position = actuators.positions()[0];
+  actuators.update(0.5);
+  actuators.update(kNaN);
+  actuators.update(-kInf);
+  EXPECT_EQ(actuators.positions()[0], position);
+  actuators.update(1.1);
+  EXPECT_NEAR(actuators.positions()[0], rampPosition(2.0, 20.0, 1.1), 1e-12);
+}
+
+TEST(SimulatedActuators, LateCommandTakesEffectAtTheLatestTimeSeen) {
+  auto actuators = makeActuators(10.0, 20.0, 0.5);
+  actuators.update(2.0);
+  ASSERT_EQ(actuators.command({"theta"}, {1.0}, 1.0), "");
+  // Watchdog restarted at 2.0, not 1.0.
+  actuators.update(2.49);
+  EXPECT_FALSE(actuators.timedOut());
+  EXPECT_NEAR(actuators.velocities()[0], 1.0, kTol);
+  actuators.update(2.5);
+  EXPECT_TRUE(actuators.timedOut());
+}
+
+TEST(SimulatedActuators, StopZeroesImmediatelyAndHoldsPosition) {
+  auto actuators = makeActuators(10.0, 20.0, 100.0);
+  ASSERT_EQ(actuators.command({"theta", "phi", "psi"}, {5.0, -5.0, 1.0}, 0.0), "");
+  actuators.update(1.0);
+  actuators.stop(1.5);
+  const auto positions = actuators.positions();
+  EXPECT_NEAR(positions[0], rampPosition(5.0, 20.0, 1.5), 1e-12);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(actuators.velocities()[i], 0.0);
+    EXPECT_EQ(actuators.setpoints()[i], 0.0);
+  }
+  actuators.update(3.0);
+  EXPECT_EQ(actuators.positions(), positions);
+  // The next command moves them again, from rest.
+  ASSERT_EQ(actuators.command({"theta"}, {5.0}, 3.0), "");
+  actuators.update(3.1);
+  EXPECT_NEAR(actuators.velocities()[0], 2.0, kTol);
+}
+
+TEST(SimulatedActuators, EStopRejectsCommandsUntilReleased) {
+  auto actuators = makeActuators(10.0, 20.0, 100.0);
+  ASSERT_EQ(actuators.command({"theta"}, {5.0}, 0.0), "");
+  actuators.update(1.0);
+  actuators.setEStop(true, 1.0);
+  EXPECT_TRUE(actuators.eStopped());
+  EXPECT_EQ(actuators.velocities()[0], 0.0);
+  EXPECT_TRUE(contains(actuators.command({"theta"}, {5.0}, 1.1), "e-stop engaged"));
+  actuators.update(2.0);
+  EXPECT_EQ(actuators.velocities()[0], 0.0);
+  EXPECT_EQ(actuators.setpoints()[0], 0.0);
+
+  actuators.setEStop(false, 2.0);
+  EXPECT_FALSE(actuators.eStopped());
+  actuators.update(2.5);
+  EXPECT_EQ(actuators.velocities()[0], 0.0) << "release must not resume the old set-point";
+  ASSERT_EQ(actuators.command({"theta"}, {5.0}, 2.5), "");
+  actuators.update(2.6);
+  EXPECT_NEAR(actuators.velocities()[0], 2.0, kTol);
+}
+
+TEST(SimulatedActuators, BadConstructorArgumentsThrowWithContext) {
+  const std::vector<std::string> names = {"theta", "phi"};
+  const std::vector<ActuatorLimits> good(2, {10.0, 20.0});
+  EXPECT_EQ(constructionError(names, good, 0.5), "");
+
+  EXPECT_TRUE(contains(constructionError({}, {}, 0.5), "no actuator names"));
+  EXPECT_TRUE(contains(constructionError(names, {{10.0, 20.0}}, 0.5), "1 limit entries"));
+  EXPECT_TRUE(contains(constructionError({"theta", "theta"}, good, 0.5), "'theta' appears twice"));
+  EXPECT_TRUE(contains(constructionError({"theta", ""}, good, 0.5), "#1 is empty"));
+  for (double bad : {0.0, -1.0, kNaN, kInf}) {
+    EXPECT_TRUE(contains(constructionError(names, {{10.0, 20.0}, {bad, 20.0}}, 0.5),
+                         "max_velocity of 'phi'"))
+        << bad;
+    EXPECT_TRUE(contains(constructionError(names, {{10.0, bad}, {10.0, 20.0}}, 0.5),
+                         "max_acceleration of 'theta'"))
+        << bad;
+    EXPECT_TRUE(contains(constructionError(names, good, bad), "command_timeout")) << bad;
+  }
+  EXPECT_TRUE(contains(constructionError(names, {{-3.0, 20.0}, {10.0, 20.0}}, 0.5), "got -3"));
+}
