@@ -1,0 +1,55 @@
+#include "spherical_robots/config/yaml_parameter_source.hpp"
+
+#include <sstream>
+#include <stdexcept>
+
+namespace spherical_robots::config {
+
+YamlParameterSource::YamlParameterSource(const std::string& path) : path_(path) {
+  try {
+    root_ = YAML::LoadFile(path);
+  } catch (const YAML::Exception& error) {
+    throw std::invalid_argument("cannot read parameters from '" + path + "': " + error.what());
+  }
+}
+
+YAML::Node YamlParameterSource::find(const std::string& key) const {
+  // Const lookups and reset(): a non-const operator[] or operator= would modify the tree.
+  YAML::Node node;
+  node.reset(root_);
+  std::istringstream parts(key);
+  std::string part;
+  while (std::getline(parts, part, '/')) {
+    if (part.empty()) continue;
+    if (!node.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
+    const YAML::Node child = static_cast<const YAML::Node&>(node)[part];
+    if (!child.IsDefined()) return YAML::Node(YAML::NodeType::Undefined);
+    node.reset(child);
+  }
+  return node;
+}
+
+std::optional<double> YamlParameterSource::number(const std::string& key) const {
+  const YAML::Node node = find(key);
+  if (!node.IsDefined() || node.IsNull()) return std::nullopt;
+  try {
+    if (!node.IsScalar()) throw YAML::Exception(YAML::Mark(), "not a scalar");
+    return node.as<double>();
+  } catch (const YAML::Exception&) {
+    std::ostringstream message;
+    message << path_ << ": parameter '" << key << "' must be a number, got '"
+            << YAML::Dump(node) << "'";
+    throw std::invalid_argument(message.str());
+  }
+}
+
+std::optional<std::string> YamlParameterSource::text(const std::string& key) const {
+  const YAML::Node node = find(key);
+  if (!node.IsDefined() || node.IsNull()) return std::nullopt;
+  if (!node.IsScalar()) {
+    throw std::invalid_argument(path_ + ": parameter '" + key + "' must be a string");
+  }
+  return node.as<std::string>();
+}
+
+}  // namespace spherical_robots::config

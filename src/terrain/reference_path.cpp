@@ -1,0 +1,111 @@
+#include "spherical_robots/terrain/reference_path.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace spherical_robots::terrain {
+namespace {
+
+void requirePositive(double value, const char* name, const char* path) {
+  if (!std::isfinite(value) || value <= 0.0) {
+    std::ostringstream message;
+    message << path << " path: " << name << " must be finite and > 0, got " << value;
+    throw std::invalid_argument(message.str());
+  }
+}
+
+void requireFiniteTime(double t) {
+  if (!std::isfinite(t)) throw std::invalid_argument("reference path: time is not finite");
+}
+
+}  // namespace
+
+CirclePath::CirclePath(double radius, double angular_rate)
+    : radius_(radius), angular_rate_(angular_rate) {
+  requirePositive(radius, "radius", "circle");
+  if (!std::isfinite(angular_rate) || angular_rate == 0.0) {
+    throw std::invalid_argument("circle path: angular_rate must be finite and non-zero, got " +
+                                std::to_string(angular_rate));
+  }
+}
+
+// Eq 60 corrected: the printed y = 2 cos(0.05 t) would make the path a line.
+Eigen::Vector2d CirclePath::position(double t) const {
+  requireFiniteTime(t);
+  return radius_ * Eigen::Vector2d(std::cos(angular_rate_ * t), std::sin(angular_rate_ * t));
+}
+
+Eigen::Vector2d CirclePath::velocity(double t) const {
+  requireFiniteTime(t);
+  return radius_ * angular_rate_ *
+         Eigen::Vector2d(-std::sin(angular_rate_ * t), std::cos(angular_rate_ * t));
+}
+
+double CirclePath::period() const { return 2.0 * M_PI / std::abs(angular_rate_); }
+
+std::string CirclePath::describe() const {
+  std::ostringstream text;
+  text << "circle r=" << radius_ << " m w=" << angular_rate_ << " rad/s";
+  return text.str();
+}
+
+DiamondPath::DiamondPath(double half_diagonal, double speed)
+    : half_diagonal_(half_diagonal), speed_(speed) {
+  requirePositive(half_diagonal, "half_diagonal", "diamond");
+  requirePositive(speed, "speed", "diamond");
+}
+
+namespace {
+
+struct DiamondEdge {
+  Eigen::Vector2d start;
+  Eigen::Vector2d direction;  // unit
+  double travelled;           // along this edge [m]
+};
+
+DiamondEdge diamondEdge(double half_diagonal, double speed, double t) {
+  requireFiniteTime(t);
+  const std::array<Eigen::Vector2d, 4> vertices = {
+      Eigen::Vector2d(half_diagonal, 0.0), Eigen::Vector2d(0.0, half_diagonal),
+      Eigen::Vector2d(-half_diagonal, 0.0), Eigen::Vector2d(0.0, -half_diagonal)};
+  const double edge_length = std::sqrt(2.0) * half_diagonal;
+  double along = std::fmod(speed * t, 4.0 * edge_length);
+  if (along < 0.0) along += 4.0 * edge_length;
+  const int edge = std::min(3, static_cast<int>(along / edge_length));
+  const Eigen::Vector2d& start = vertices[edge];
+  const Eigen::Vector2d& end = vertices[(edge + 1) % 4];
+  return {start, (end - start) / edge_length, along - edge * edge_length};
+}
+
+}  // namespace
+
+Eigen::Vector2d DiamondPath::position(double t) const {
+  const DiamondEdge edge = diamondEdge(half_diagonal_, speed_, t);
+  return edge.start + edge.travelled * edge.direction;
+}
+
+Eigen::Vector2d DiamondPath::velocity(double t) const {
+  return speed_ * diamondEdge(half_diagonal_, speed_, t).direction;
+}
+
+double DiamondPath::period() const { return 4.0 * std::sqrt(2.0) * half_diagonal_ / speed_; }
+
+std::string DiamondPath::describe() const {
+  std::ostringstream text;
+  text << "diamond d=" << half_diagonal_ << " m v=" << speed_ << " m/s";
+  return text.str();
+}
+
+DesiredPoint liftOntoSurface(const ReferencePath& path, const Surface& surface, double t) {
+  const Eigen::Vector2d xy = path.position(t);
+  const Eigen::Vector2d xy_rate = path.velocity(t);
+  DesiredPoint desired;
+  desired.position = {xy.x(), xy.y(), surface.height(xy.x(), xy.y())};
+  desired.velocity = {xy_rate.x(), xy_rate.y(), surface.gradient(xy.x(), xy.y()).dot(xy_rate)};
+  return desired;
+}
+
+}  // namespace spherical_robots::terrain

@@ -1,0 +1,51 @@
+#include "spherical_robots/terrain/robot_type.hpp"
+
+#include <stdexcept>
+
+namespace spherical_robots::terrain {
+
+RobotType robotTypeFromString(const std::string& name) {
+  if (name == "3R") return RobotType::ThreeAxisRolling;
+  if (name == "2R") return RobotType::TwoAxisRolling;
+  if (name == "RT") return RobotType::RollingAndTurning;
+  if (name == "RS") return RobotType::RollingAndSteering;
+  throw std::invalid_argument("unknown robot type '" + name + "' (expected 3R, 2R, RT or RS)");
+}
+
+std::string toString(RobotType type) {
+  switch (type) {
+    case RobotType::ThreeAxisRolling: return "3R";
+    case RobotType::TwoAxisRolling: return "2R";
+    case RobotType::RollingAndTurning: return "RT";
+    case RobotType::RollingAndSteering: return "RS";
+  }
+  throw std::invalid_argument("invalid RobotType value");
+}
+
+std::array<bool, 3> actuatedRates(RobotType type) {
+  switch (type) {
+    case RobotType::ThreeAxisRolling: return {true, true, true};
+    case RobotType::TwoAxisRolling: return {true, true, false};
+    case RobotType::RollingAndTurning: return {true, false, true};
+    case RobotType::RollingAndSteering: return {true, true, false};
+  }
+  throw std::invalid_argument("invalid RobotType value");
+}
+
+std::array<const char*, 3> rateNames(RobotType type) {
+  switch (type) {
+    case RobotType::ThreeAxisRolling: return {"theta", "phi", "psi"};
+    case RobotType::TwoAxisRolling: return {"theta", "phi", nullptr};
+    case RobotType::RollingAndTurning: return {"theta", nullptr, "psi"};
+    case RobotType::RollingAndSteering: return {"alpha", "phi", nullptr};
+  }
+  throw std::invalid_argument("invalid RobotType value");
+}
+
+DriveRates keepActuated(RobotType type, const DriveRates& rates) {
+  const std::array<bool, 3> actuated = actuatedRates(type);
+  return {actuated[0] ? rates.roll_rate : 0.0, actuated[1] ? rates.lateral_rate : 0.0,
+          actuated[2] ? rates.turn_rate : 0.0};
+}
+
+}  // namespace spherical_robots::terrain

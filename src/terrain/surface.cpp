@@ -1,0 +1,108 @@
+#include "spherical_robots/terrain/surface.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace spherical_robots::terrain {
+namespace {
+
+void requireFinite(double value, const char* name, const char* surface) {
+  if (!std::isfinite(value)) {
+    std::ostringstream message;
+    message << surface << ": " << name << " must be finite, got " << value;
+    throw std::invalid_argument(message.str());
+  }
+}
+
+}  // namespace
+
+CosineSurface::CosineSurface(double amplitude, double frequency)
+    : amplitude_(amplitude), frequency_(frequency) {
+  requireFinite(amplitude, "amplitude", "cosine surface");
+  requireFinite(frequency, "frequency", "cosine surface");
+  if (frequency <= 0.0) {
+    throw std::invalid_argument("cosine surface: frequency must be > 0 rad/m, got " +
+                                std::to_string(frequency));
+  }
+}
+
+// Eq 59.
+double CosineSurface::height(double x, double y) const {
+  return amplitude_ * (std::cos(frequency_ * x) + std::cos(frequency_ * y) - 2.0);
+}
+
+Eigen::Vector2d CosineSurface::gradient(double x, double y) const {
+  const double scale = -amplitude_ * frequency_;
+  return {scale * std::sin(frequency_ * x), scale * std::sin(frequency_ * y)};
+}
+
+Eigen::Matrix2d CosineSurface::hessian(double x, double y) const {
+  const double scale = -amplitude_ * frequency_ * frequency_;
+  Eigen::Matrix2d h;
+  h << scale * std::cos(frequency_ * x), 0.0, 0.0, scale * std::cos(frequency_ * y);
+  return h;
+}
+
+// The Hessian's largest eigenvalue, |a| w^2, is reached where the gradient vanishes, so it is
+// also the largest normal curvature: a non-zero gradient only divides it by (1 + |grad f|^2)^k.
+double CosineSurface::maxPrincipalCurvature() const {
+  return std::abs(amplitude_) * frequency_ * frequency_;
+}
+
+std::string CosineSurface::describe() const {
+  std::ostringstream text;
+  text << "cosine a=" << amplitude_ << " m w=" << frequency_ << " rad/m";
+  return text.str();
+}
+
+PlaneSurface::PlaneSurface(double slope_x, double slope_y, double offset)
+    : slope_(slope_x, slope_y), offset_(offset) {
+  requireFinite(slope_x, "slope_x", "plane");
+  requireFinite(slope_y, "slope_y", "plane");
+  requireFinite(offset, "offset", "plane");
+}
+
+double PlaneSurface::height(double x, double y) const {
+  return offset_ + slope_.x() * x + slope_.y() * y;
+}
+
+Eigen::Vector2d PlaneSurface::gradient(double, double) const { return slope_; }
+
+Eigen::Matrix2d PlaneSurface::hessian(double, double) const { return Eigen::Matrix2d::Zero(); }
+
+double PlaneSurface::maxPrincipalCurvature() const { return 0.0; }
+
+std::string PlaneSurface::describe() const {
+  std::ostringstream text;
+  text << "plane z=" << offset_ << "+" << slope_.x() << "x+" << slope_.y() << "y";
+  return text.str();
+}
+
+Eigen::Vector2d principalCurvatures(const Surface& surface, double x, double y) {
+  const Eigen::Vector2d g = surface.gradient(x, y);
+  const double w = std::sqrt(1.0 + g.squaredNorm());
+  const Eigen::Matrix2d first_form = Eigen::Matrix2d::Identity() + g * g.transpose();
+  const Eigen::Matrix2d second_form = surface.hessian(x, y) / w;
+  // I^-1 II is self-adjoint with respect to I: solve the generalized symmetric problem.
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> solver(second_form, first_form);
+  return solver.eigenvalues();  // ascending
+}
+
+void requireSinglePointContact(const Surface& surface, double radius) {
+  if (!std::isfinite(radius) || radius <= 0.0) {
+    throw std::invalid_argument("sphere radius must be finite and > 0 m, got " +
+                                std::to_string(radius));
+  }
+  const double curvature = surface.maxPrincipalCurvature();
+  if (radius * curvature >= 1.0) {
+    std::ostringstream message;
+    message << "radius " << radius << " m on surface '" << surface.describe()
+            << "' breaks single-point contact: R * max principal curvature = " << radius << " * "
+            << curvature << " 1/m = " << radius * curvature << " >= 1 (paper assumption 3)";
+    throw std::invalid_argument(message.str());
+  }
+}
+
+}  // namespace spherical_robots::terrain

@@ -1,0 +1,152 @@
+#include "spherical_robots/terrain/terrain_kinematics.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "spherical_robots/terrain/tangent_frame.hpp"
+
+namespace spherical_robots::terrain {
+namespace {
+
+void requireFinite(const TerrainState& state) {
+  if (!std::isfinite(state.x) || !std::isfinite(state.y) || !std::isfinite(state.psi) ||
+      !std::isfinite(state.phi)) {
+    std::ostringstream message;
+    message << "terrain kinematics: state is not finite (x=" << state.x << ", y=" << state.y
+            << ", psi=" << state.psi << ", phi=" << state.phi << ")";
+    throw std::invalid_argument(message.str());
+  }
+}
+
+void requireFinite(const DriveRates& rates) {
+  if (!std::isfinite(rates.roll_rate) || !std::isfinite(rates.lateral_rate) ||
+      !std::isfinite(rates.turn_rate)) {
+    std::ostringstream message;
+    message << "terrain kinematics: drive rates are not finite (roll=" << rates.roll_rate
+            << ", lateral=" << rates.lateral_rate << ", turn=" << rates.turn_rate << ")";
+    throw std::invalid_argument(message.str());
+  }
+}
+
+}  // namespace
+
+ContactModel contactModelFromString(const std::string& name) {
+  if (name == "paper") return ContactModel::Paper;
+  if (name == "rolling") return ContactModel::Rolling;
+  throw std::invalid_argument("unknown contact model '" + name + "' (expected paper or rolling)");
+}
+
+std::string toString(ContactModel model) {
+  return model == ContactModel::Paper ? "paper" : "rolling";
+}
+
+TerrainKinematics::TerrainKinematics(const Surface& surface, RobotType type, double radius,
+                                     ContactModel model, double tilt_limit)
+    : surface_(surface), type_(type), radius_(radius), model_(model), tilt_limit_(tilt_limit) {
+  requireSinglePointContact(surface, radius);
+  if (!std::isfinite(tilt_limit) || tilt_limit <= 0.0 || tilt_limit >= M_PI / 2.0) {
+    throw std::invalid_argument("RS tilt limit must be in (0, pi/2) rad, got " +
+                                std::to_string(tilt_limit));
+  }
+}
+
+ContactGeometry TerrainKinematics::geometry(const TerrainState& state) const {
+  requireFinite(state);
+  ContactGeometry geometry;
+  geometry.gradient = surface_.gradient(state.x, state.y);
+  geometry.heading_frame = headingFrame(geometry.gradient, state.psi);
+  geometry.contact_point = {state.x, state.y, surface_.height(state.x, state.y)};
+  geometry.centre = geometry.contact_point + radius_ * geometry.heading_frame.col(2);  // eq 51
+  return geometry;
+}
+
+DriveRates TerrainKinematics::realisedRates(const TerrainState& state,
+                                            const DriveRates& commanded) const {
+  requireFinite(commanded);
+  DriveRates realised = keepActuated(type_, commanded);
+  if (type_ == RobotType::RollingAndSteering) {
+    const bool pushing_past_limit = (state.phi >= tilt_limit_ && realised.lateral_rate > 0.0) ||
+                                    (state.phi <= -tilt_limit_ && realised.lateral_rate < 0.0);
+    if (pushing_past_limit) realised.lateral_rate = 0.0;
+    realised.turn_rate = -realised.roll_rate * std::sin(state.phi);  // eq 44
+  }
+  return realised;
+}
+
+TerrainStateRate TerrainKinematics::stateRate(const TerrainState& state,
+                                              const DriveRates& commanded) const {
+  return stateRate(state, geometry(state), commanded);
+}
+
+TerrainStateRate TerrainKinematics::stateRate(const TerrainState& state,
+                                              const ContactGeometry& geometry,
+                                              const DriveRates& commanded) const {
+  const DriveRates rates = realisedRates(state, commanded);
+  // Eqs 33 and 48: the rolling velocity in F_L.
+  const double forward = type_ == RobotType::RollingAndSteering
+                             ? radius_ * rates.roll_rate * std::cos(state.phi)
+                             : radius_ * rates.roll_rate;
+  const double leftward = -radius_ * rates.lateral_rate;
+  const Eigen::Matrix3d& frame = geometry.heading_frame;
+  const Eigen::Vector3d velocity = forward * frame.col(0) + leftward * frame.col(1);  // eq 28
+
+  TerrainStateRate rate;
+  rate.psi_dot = rates.turn_rate;
+  rate.phi_dot = type_ == RobotType::RollingAndSteering ? rates.lateral_rate : 0.0;
+  if (model_ == ContactModel::Paper) {
+    rate.x_dot = velocity.x();
+    rate.y_dot = velocity.y();
+    return rate;
+  }
+  // Rolling: velocity is the centre's. C(x, y) = P0 + R n, with dn/dx_j = (I - n n^T) dN/dx_j / |N|
+  // for N = (-f_x, -f_y, 1); solve [dC/dx dC/dy] (x', y') = velocity in the tangent plane.
+  const Eigen::Vector3d& n = frame.col(2);
+  const Eigen::Matrix2d hessian = surface_.hessian(state.x, state.y);
+  const double normal_length = std::sqrt(1.0 + geometry.gradient.squaredNorm());
+  const Eigen::Matrix3d projector = Eigen::Matrix3d::Identity() - n * n.transpose();
+  Eigen::Matrix<double, 3, 2> jacobian;
+  jacobian << 1.0, 0.0, 0.0, 1.0, geometry.gradient.x(), geometry.gradient.y();
+  Eigen::Matrix<double, 3, 2> normal_derivative;
+  normal_derivative << -hessian(0, 0), -hessian(0, 1), -hessian(1, 0), -hessian(1, 1), 0.0, 0.0;
+  jacobian += (radius_ / normal_length) * projector * normal_derivative;
+  const Eigen::Matrix2d gram = jacobian.transpose() * jacobian;
+  const double determinant = gram.determinant();
+  if (!(determinant > 1e-12 * gram.trace() * gram.trace())) {
+    std::ostringstream message;
+    message << "rolling contact is degenerate at (" << state.x << ", " << state.y
+            << "): the sphere's centre surface folds (R * curvature >= 1)";
+    throw std::invalid_argument(message.str());
+  }
+  const Eigen::Vector2d contact_rate = gram.inverse() * (jacobian.transpose() * velocity);
+  rate.x_dot = contact_rate.x();
+  rate.y_dot = contact_rate.y();
+  return rate;
+}
+
+// Eq 46 (for RS, the shell turns by psi_dot = -alpha_dot sin(phi) about n, cancelling the tilted
+// axle's n component, so Omega lies in the tangent plane as a rolling cone's must).
+Eigen::Vector3d TerrainKinematics::shellAngularVelocity(const TerrainState& state,
+                                                        const DriveRates& commanded) const {
+  const DriveRates rates = realisedRates(state, commanded);
+  const Eigen::Matrix3d frame = geometry(state).heading_frame;
+  if (type_ == RobotType::RollingAndSteering) {
+    return rates.lateral_rate * frame.col(0) + rates.roll_rate * std::cos(state.phi) * frame.col(1);
+  }
+  return rates.lateral_rate * frame.col(0) + rates.roll_rate * frame.col(1) +
+         rates.turn_rate * frame.col(2);
+}
+
+TerrainState TerrainKinematics::constrain(const TerrainState& state) const {
+  TerrainState constrained = state;
+  if (type_ == RobotType::RollingAndSteering) {
+    constrained.phi = std::clamp(state.phi, -tilt_limit_, tilt_limit_);
+  } else {
+    constrained.phi = 0.0;
+  }
+  return constrained;
+}
+
+}  // namespace spherical_robots::terrain

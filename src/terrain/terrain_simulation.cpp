@@ -1,0 +1,117 @@
+#include "spherical_robots/terrain/terrain_simulation.hpp"
+
+#include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
+#include <cmath>
+#include <stdexcept>
+
+namespace spherical_robots::terrain {
+namespace {
+
+using OdeState = std::array<double, 4>;  // x, y, psi, phi
+using Stepper = boost::numeric::odeint::runge_kutta4<OdeState>;
+
+TerrainState fromOde(const OdeState& x) { return {x[0], x[1], x[2], x[3]}; }
+OdeState toOde(const TerrainState& s) { return {s.x, s.y, s.psi, s.phi}; }
+OdeState toOde(const TerrainStateRate& r) { return {r.x_dot, r.y_dot, r.psi_dot, r.phi_dot}; }
+
+void requireStep(double dt) {
+  if (!std::isfinite(dt) || dt <= 0.0) {
+    throw std::invalid_argument("integration step dt must be finite and > 0 s, got " +
+                                std::to_string(dt));
+  }
+}
+
+TerrainState checkedResult(const TerrainKinematics& kinematics, const OdeState& x, double t) {
+  for (double value : x) {
+    if (!std::isfinite(value)) {
+      throw std::runtime_error("terrain state became non-finite at t = " + std::to_string(t) +
+                               " s");
+    }
+  }
+  return kinematics.constrain(fromOde(x));
+}
+
+}  // namespace
+
+TerrainSimulation::TerrainSimulation(const TerrainKinematics& kinematics,
+                                     const PurePursuitController& controller,
+                                     const ReferencePath& path, const TerrainState& initial)
+    : kinematics_(kinematics), controller_(controller), path_(path),
+      state_(kinematics.constrain(initial)) {
+  if (controller.type() != kinematics.type()) {
+    throw std::invalid_argument("controller is for robot type " + toString(controller.type()) +
+                                " but the kinematics are " + toString(kinematics.type()));
+  }
+  kinematics_.geometry(state_);  // validates the initial state
+}
+
+TerrainSample TerrainSimulation::evaluate(const TerrainState& state, double t) const {
+  TerrainSample sample;
+  sample.t = t;
+  sample.state = state;
+  sample.geometry = kinematics_.geometry(state);
+  sample.desired = liftOntoSurface(path_, kinematics_.surface(), t);
+  sample.error = trackingError(sample.geometry, sample.desired.position);
+  sample.rates = kinematics_.realisedRates(
+      state, controller_.command(sample.error, sample.desired.velocity));
+  return sample;
+}
+
+void TerrainSimulation::step(double dt) {
+  requireStep(dt);
+  // The controller runs inside the vector field, so it is evaluated at every RK stage.
+  const auto closed_loop = [this](const OdeState& x, OdeState& dxdt, double t) {
+    const TerrainState state = fromOde(x);
+    const TerrainSample sample = evaluate(state, t);
+    dxdt = toOde(kinematics_.stateRate(state, sample.geometry, sample.rates));
+  };
+  OdeState x = toOde(state_);
+  Stepper().do_step(closed_loop, x, t_, dt);
+  t_ += dt;
+  state_ = checkedResult(kinematics_, x, t_);
+}
+
+TerrainSample TerrainSimulation::sample() const { return evaluate(state_, t_); }
+
+TerrainState stepWithHeldRates(const TerrainKinematics& kinematics, const TerrainState& state,
+                               const DriveRates& rates, double dt) {
+  requireStep(dt);
+  const auto open_loop = [&kinematics, &rates](const OdeState& x, OdeState& dxdt, double) {
+    dxdt = toOde(kinematics.stateRate(fromOde(x), rates));
+  };
+  OdeState x = toOde(state);
+  Stepper().do_step(open_loop, x, 0.0, dt);
+  return checkedResult(kinematics, x, dt);
+}
+
+Eigen::Quaterniond advanceOrientation(const Eigen::Quaterniond& orientation,
+                                      const Eigen::Vector3d& omega, double dt) {
+  requireStep(dt);
+  if (!omega.allFinite()) throw std::invalid_argument("angular velocity is not finite");
+  const double angle = omega.norm() * dt;
+  if (angle == 0.0) return orientation;
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(angle, omega / omega.norm()));
+  return (turn * orientation).normalized();
+}
+
+TrackingSummary::TrackingSummary(double threshold, double settle_time)
+    : threshold_(threshold), settle_time_(settle_time) {}
+
+void TrackingSummary::add(double t, double error_norm) {
+  if (std::isnan(time_to_converge_) && error_norm < threshold_) time_to_converge_ = t;
+  if (t >= settle_time_) {
+    sum_after_ += error_norm;
+    max_after_ = count_after_ == 0 ? error_norm : std::max(max_after_, error_norm);
+    ++count_after_;
+  }
+}
+
+double TrackingSummary::meanAfterSettling() const {
+  return count_after_ == 0 ? std::numeric_limits<double>::quiet_NaN() : sum_after_ / count_after_;
+}
+
+double TrackingSummary::maxAfterSettling() const {
+  return count_after_ == 0 ? std::numeric_limits<double>::quiet_NaN() : max_after_;
+}
+
+}  // namespace spherical_robots::terrain

@@ -29,8 +29,9 @@ struct DriveRates {
 /// Which of (roll_rate, lateral_rate, turn_rate) the type actuates.
 std::array<bool, 3> actuatedRates(RobotType type);
 
-/// Names of the type's actuated rates, in DriveRates order, e.g. {"theta", "phi", "psi"}; these
-/// are the actuator (joint) names on actuators/command and actuators/state.
+/// Names of the rates in DriveRates order, nullptr where the type does not actuate one:
+/// 3R {"theta", "phi", "psi"}, 2R {"theta", "phi", -}, RT {"theta", -, "psi"}, RS {"alpha", "phi", -}.
+/// These are the actuator (joint) names on actuators/command and actuators/state.
 std::array<const char*, 3> rateNames(RobotType type);
 
 /// The rates with every rate the type does not actuate set to 0 (RS turn_rate included).
