@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Installs the Debian packages, builds, and runs every gtest and rostest of the package
+# (colcon test, under a virtual X server), then prints the summary.
+# Exit status: 0 only if at least one test ran and none failed.
+set -euo pipefail
+. "$(dirname "${BASH_SOURCE[0]}")/env.sh"
+cd "$SR_ROOT"
+total_start=$SECONDS
+
+sr_step "install Debian packages" sr_install
+sr_step "build (colcon, Release)" sr_build
+sr_source_workspace
+
+# rostest starts its own master on a random port; its logs go to a fresh ROS_HOME.
+ROS_HOME=$(mktemp -d /tmp/spherical_robots_tests.XXXXXX)
+export ROS_HOME
+unset ROS_MASTER_URI
+# Results of an earlier run must not count again.
+rm -rf build/spherical_robots/test_results
+
+test_rc=0
+sr_step "run gtests and rostests (colcon test, xvfb-run)" \
+  xvfb-run -a -s "-screen 0 1280x1024x24" \
+  colcon test --base-paths . --build-base build --install-base install \
+    --event-handlers console_cohesion+ --return-code-on-test-failure \
+    --ctest-args --timeout 900 \
+  || test_rc=$?
+
+colcon test-result --test-result-base build --verbose || true
+summary=$(colcon test-result --test-result-base build | grep '^Summary:' || true)
+sr_log "${summary:-Summary: no test results found}   (ROS logs: $ROS_HOME/log)"
+sr_log "total $((SECONDS - total_start)) s"
+
+counts=$(echo "$summary" |
+  sed -nE 's/^Summary: ([0-9]+) tests, ([0-9]+) errors, ([0-9]+) failures.*/\1 \2 \3/p')
+read -r ran errors failures <<< "${counts:-0 0 0}"
+if [ "$ran" -eq 0 ]; then
+  sr_log "FAILED: no tests ran"; exit 1
+fi
+if [ "$errors" -ne 0 ] || [ "$failures" -ne 0 ] || [ "$test_rc" -ne 0 ]; then
+  sr_log "FAILED: $failures failures, $errors errors (colcon test exit $test_rc)"; exit 1
+fi
+sr_log "OK: $ran tests passed"
