@@ -33,8 +33,12 @@ TrackingError trackingError(const ContactGeometry& geometry, const Eigen::Vector
   result.norm = result.error.norm();
   const double along_heading = result.error.dot(geometry.heading_frame.col(0));
   const double along_left = result.error.dot(geometry.heading_frame.col(1));
-  result.zeta = (along_heading == 0.0 && along_left == 0.0) ? 0.0
-                                                            : std::atan2(along_left, along_heading);
+  const double in_plane = std::hypot(along_heading, along_left);
+  if (in_plane > 0.0) {
+    result.zeta = std::atan2(along_left, along_heading);
+    result.cos_zeta = along_heading / in_plane;
+    result.sin_zeta = along_left / in_plane;
+  }
   return result;
 }
 
@@ -55,8 +59,8 @@ DriveRates PurePursuitController::command(const TrackingError& error,
   }
   const double normalised = error.norm / (gains_.k_e + error.norm);
   const double feed_forward = desired_velocity.norm() / radius_;
-  const double cos_zeta = std::cos(error.zeta);
-  const double sin_zeta = std::sin(error.zeta);
+  const double cos_zeta = error.cos_zeta;
+  const double sin_zeta = error.sin_zeta;
   const auto lateral = [&](double k_phi1, double k_phi2) {
     return -(k_phi1 * normalised + k_phi2) * sin_zeta;
   };

@@ -28,21 +28,18 @@ CosineSurface::CosineSurface(double amplitude, double frequency)
   }
 }
 
-// Eq 59.
-double CosineSurface::height(double x, double y) const {
-  return amplitude_ * (std::cos(frequency_ * x) + std::cos(frequency_ * y) - 2.0);
-}
-
-Eigen::Vector2d CosineSurface::gradient(double x, double y) const {
-  const double scale = -amplitude_ * frequency_;
-  return {scale * std::sin(frequency_ * x), scale * std::sin(frequency_ * y)};
-}
-
-Eigen::Matrix2d CosineSurface::hessian(double x, double y) const {
-  const double scale = -amplitude_ * frequency_ * frequency_;
-  Eigen::Matrix2d h;
-  h << scale * std::cos(frequency_ * x), 0.0, 0.0, scale * std::cos(frequency_ * y);
-  return h;
+// Eq 59 and its derivatives.
+SurfacePoint CosineSurface::evaluate(double x, double y) const {
+  const double cos_x = std::cos(frequency_ * x);
+  const double sin_x = std::sin(frequency_ * x);
+  const double cos_y = std::cos(frequency_ * y);
+  const double sin_y = std::sin(frequency_ * y);
+  SurfacePoint point;
+  point.height = amplitude_ * (cos_x + cos_y - 2.0);
+  point.gradient = -amplitude_ * frequency_ * Eigen::Vector2d(sin_x, sin_y);
+  point.hessian(0, 0) = -amplitude_ * frequency_ * frequency_ * cos_x;
+  point.hessian(1, 1) = -amplitude_ * frequency_ * frequency_ * cos_y;
+  return point;
 }
 
 // The Hessian's largest eigenvalue, |a| w^2, is reached where the gradient vanishes, so it is
@@ -64,13 +61,12 @@ PlaneSurface::PlaneSurface(double slope_x, double slope_y, double offset)
   requireFinite(offset, "offset", "plane");
 }
 
-double PlaneSurface::height(double x, double y) const {
-  return offset_ + slope_.x() * x + slope_.y() * y;
+SurfacePoint PlaneSurface::evaluate(double x, double y) const {
+  SurfacePoint point;
+  point.height = offset_ + slope_.dot(Eigen::Vector2d(x, y));
+  point.gradient = slope_;
+  return point;
 }
-
-Eigen::Vector2d PlaneSurface::gradient(double, double) const { return slope_; }
-
-Eigen::Matrix2d PlaneSurface::hessian(double, double) const { return Eigen::Matrix2d::Zero(); }
 
 double PlaneSurface::maxPrincipalCurvature() const { return 0.0; }
 
@@ -81,10 +77,11 @@ std::string PlaneSurface::describe() const {
 }
 
 Eigen::Vector2d principalCurvatures(const Surface& surface, double x, double y) {
-  const Eigen::Vector2d g = surface.gradient(x, y);
+  const SurfacePoint point = surface.evaluate(x, y);
+  const Eigen::Vector2d& g = point.gradient;
   const double w = std::sqrt(1.0 + g.squaredNorm());
   const Eigen::Matrix2d first_form = Eigen::Matrix2d::Identity() + g * g.transpose();
-  const Eigen::Matrix2d second_form = surface.hessian(x, y) / w;
+  const Eigen::Matrix2d second_form = point.hessian / w;
   // I^-1 II is self-adjoint with respect to I: solve the generalized symmetric problem.
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> solver(second_form, first_form);
   return solver.eigenvalues();  // ascending

@@ -56,9 +56,11 @@ TerrainKinematics::TerrainKinematics(const Surface& surface, RobotType type, dou
 ContactGeometry TerrainKinematics::geometry(const TerrainState& state) const {
   requireFinite(state);
   ContactGeometry geometry;
-  geometry.gradient = surface_.gradient(state.x, state.y);
+  const SurfacePoint point = surface_.evaluate(state.x, state.y);
+  geometry.gradient = point.gradient;
+  geometry.hessian = point.hessian;
   geometry.heading_frame = headingFrame(geometry.gradient, state.psi);
-  geometry.contact_point = {state.x, state.y, surface_.height(state.x, state.y)};
+  geometry.contact_point = {state.x, state.y, point.height};
   geometry.centre = geometry.contact_point + radius_ * geometry.heading_frame.col(2);  // eq 51
   return geometry;
 }
@@ -104,7 +106,7 @@ TerrainStateRate TerrainKinematics::stateRate(const TerrainState& state,
   // Rolling: velocity is the centre's. C(x, y) = P0 + R n, with dn/dx_j = (I - n n^T) dN/dx_j / |N|
   // for N = (-f_x, -f_y, 1); solve [dC/dx dC/dy] (x', y') = velocity in the tangent plane.
   const Eigen::Vector3d& n = frame.col(2);
-  const Eigen::Matrix2d hessian = surface_.hessian(state.x, state.y);
+  const Eigen::Matrix2d& hessian = geometry.hessian;
   const double normal_length = std::sqrt(1.0 + geometry.gradient.squaredNorm());
   const Eigen::Matrix3d projector = Eigen::Matrix3d::Identity() - n * n.transpose();
   Eigen::Matrix<double, 3, 2> jacobian;

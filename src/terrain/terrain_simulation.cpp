@@ -38,6 +38,8 @@ TerrainSimulation::TerrainSimulation(const TerrainKinematics& kinematics,
                                      const ReferencePath& path, const TerrainState& initial)
     : kinematics_(kinematics), controller_(controller), path_(path),
       state_(kinematics.constrain(initial)) {
+  const double never = std::numeric_limits<double>::quiet_NaN();  // NaN matches no time
+  desired_cache_.fill({never, DesiredPoint{}});
   if (controller.type() != kinematics.type()) {
     throw std::invalid_argument("controller is for robot type " + toString(controller.type()) +
                                 " but the kinematics are " + toString(kinematics.type()));
@@ -50,11 +52,21 @@ TerrainSample TerrainSimulation::evaluate(const TerrainState& state, double t) c
   sample.t = t;
   sample.state = state;
   sample.geometry = kinematics_.geometry(state);
-  sample.desired = liftOntoSurface(path_, kinematics_.surface(), t);
+  sample.desired = desiredAt(t);
   sample.error = trackingError(sample.geometry, sample.desired.position);
   sample.rates = kinematics_.realisedRates(
       state, controller_.command(sample.error, sample.desired.velocity));
   return sample;
+}
+
+const DesiredPoint& TerrainSimulation::desiredAt(double t) const {
+  for (const auto& [time, desired] : desired_cache_) {
+    if (time == t) return desired;
+  }
+  auto& slot = desired_cache_[desired_cache_next_];
+  desired_cache_next_ = (desired_cache_next_ + 1) % desired_cache_.size();
+  slot = {t, liftOntoSurface(path_, kinematics_.surface(), t)};
+  return slot.second;
 }
 
 void TerrainSimulation::step(double dt) {

@@ -36,6 +36,8 @@ struct TrackingError {
   /// Angle [rad] in (-pi, pi] from h to e_t's projection on the tangent plane, right-handed
   /// about n: positive when the target is to the left (eq 54 gives only its magnitude).
   double zeta = 0.0;
+  double cos_zeta = 1.0;  ///< cos(zeta), from the projection itself (no extra trigonometry)
+  double sin_zeta = 0.0;  ///< sin(zeta)
 };
 
 TrackingError trackingError(const ContactGeometry& geometry, const Eigen::Vector3d& desired);

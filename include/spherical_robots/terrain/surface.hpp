@@ -7,16 +7,23 @@
 
 namespace spherical_robots::terrain {
 
+/// f, its gradient and its Hessian at one point.
+struct SurfacePoint {
+  double height = 0.0;                                    ///< f(x, y) [m]
+  Eigen::Vector2d gradient = Eigen::Vector2d::Zero();     ///< (f_x, f_y) [-]
+  Eigen::Matrix2d hessian = Eigen::Matrix2d::Zero();      ///< [[f_xx, f_xy], [f_xy, f_yy]] [1/m]
+};
+
 /// A smooth terrain z = f(x, y), heights in [m], in the world frame.
 class Surface {
  public:
   virtual ~Surface() = default;
-  /// f(x, y) [m].
-  virtual double height(double x, double y) const = 0;
-  /// (f_x, f_y) [-].
-  virtual Eigen::Vector2d gradient(double x, double y) const = 0;
-  /// [[f_xx, f_xy], [f_xy, f_yy]] [1/m].
-  virtual Eigen::Matrix2d hessian(double x, double y) const = 0;
+  /// Height, gradient and Hessian together: they share their trigonometry, and the closed loop
+  /// needs them at every RK stage.
+  virtual SurfacePoint evaluate(double x, double y) const = 0;
+  double height(double x, double y) const { return evaluate(x, y).height; }
+  Eigen::Vector2d gradient(double x, double y) const { return evaluate(x, y).gradient; }
+  Eigen::Matrix2d hessian(double x, double y) const { return evaluate(x, y).hessian; }
   /// An upper bound [1/m] over the whole surface of the largest principal curvature, measured
   /// positive where the surface is concave up (a valley that a sphere resting on top sits in).
   virtual double maxPrincipalCurvature() const = 0;
@@ -29,9 +36,7 @@ class CosineSurface final : public Surface {
  public:
   /// @param amplitude a [m], @param frequency w [rad/m] > 0. @throw std::invalid_argument
   CosineSurface(double amplitude, double frequency);
-  double height(double x, double y) const override;
-  Eigen::Vector2d gradient(double x, double y) const override;
-  Eigen::Matrix2d hessian(double x, double y) const override;
+  SurfacePoint evaluate(double x, double y) const override;
   double maxPrincipalCurvature() const override;
   std::string describe() const override;
 
@@ -45,9 +50,7 @@ class PlaneSurface final : public Surface {
  public:
   /// @param slope_x g_x [-], @param slope_y g_y [-], @param offset z0 [m]. @throw std::invalid_argument
   PlaneSurface(double slope_x, double slope_y, double offset);
-  double height(double x, double y) const override;
-  Eigen::Vector2d gradient(double x, double y) const override;
-  Eigen::Matrix2d hessian(double x, double y) const override;
+  SurfacePoint evaluate(double x, double y) const override;
   double maxPrincipalCurvature() const override;
   std::string describe() const override;
 

@@ -48,6 +48,7 @@ struct ContactGeometry {
   Eigen::Vector3d centre;         ///< O_Sp = P0 + R n (eq 51) [m]
   Eigen::Matrix3d heading_frame;  ///< R_L, columns (h, l, n)
   Eigen::Vector2d gradient;       ///< (f_x, f_y) at P0
+  Eigen::Matrix2d hessian;        ///< f's Hessian at P0 [1/m]
 };
 
 class TerrainKinematics {

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <limits>
+#include <utility>
 
 #include "spherical_robots/terrain/pure_pursuit.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
@@ -40,11 +41,17 @@ class TerrainSimulation {
   TerrainSample evaluate(const TerrainState& state, double t) const;
 
  private:
+  /// p_d(t), remembered for the two latest times: RK4 asks for t + dt/2 twice and for t + dt
+  /// again at the next step's start.
+  const DesiredPoint& desiredAt(double t) const;
+
   const TerrainKinematics& kinematics_;
   const PurePursuitController& controller_;
   const ReferencePath& path_;
   TerrainState state_;
   double t_ = 0.0;
+  mutable std::array<std::pair<double, DesiredPoint>, 2> desired_cache_;
+  mutable std::size_t desired_cache_next_ = 0;
 };
 
 /// One RK4 step [s] of the open-loop kinematics with rates held constant over the step, as a plant
