@@ -37,12 +37,13 @@ const std::vector<Point> kSamplePoints = {{0.0, 0.0},   {kPi / kW, kPi / kW}, {k
                                           {0.785, 0.2}, {4.0, -5.5},          {0.01, 1e-3}};
 
 // Central differences of a scalar/vector function, step h (error O(h^2) ~ 1e-10 for h = 1e-5).
+// The return type is spelled out so that an Eigen expression is evaluated, not left dangling.
 template <typename F>
-auto centralDx(F f, double x, double y, double h = 1e-5) {
+auto centralDx(F f, double x, double y, double h = 1e-5) -> decltype(f(x, y)) {
   return (f(x + h, y) - f(x - h, y)) / (2.0 * h);
 }
 template <typename F>
-auto centralDy(F f, double x, double y, double h = 1e-5) {
+auto centralDy(F f, double x, double y, double h = 1e-5) -> decltype(f(x, y)) {
   return (f(x, y + h) - f(x, y - h)) / (2.0 * h);
 }
 
@@ -64,21 +65,19 @@ Eigen::Vector2d graphCurvatures(double fx, double fy, double fxx, double fxy, do
 class SphericalBowl final : public Surface {
  public:
   explicit SphericalBowl(double r, double sign = 1.0) : r_(r), sign_(sign) {}
-  double height(double x, double y) const override { return -sign_ * std::sqrt(q(x, y)); }
-  Eigen::Vector2d gradient(double x, double y) const override {
-    return sign_ * Eigen::Vector2d(x, y) / std::sqrt(q(x, y));
-  }
-  Eigen::Matrix2d hessian(double x, double y) const override {
-    const double s = std::sqrt(q(x, y));
-    Eigen::Matrix2d h;
-    h << (r_ * r_ - y * y), x * y, x * y, (r_ * r_ - x * x);
-    return sign_ * h / (s * s * s);
+  spherical_robots::terrain::SurfacePoint evaluate(double x, double y) const override {
+    const double q = r_ * r_ - x * x - y * y, root = std::sqrt(q);
+    spherical_robots::terrain::SurfacePoint p;
+    p.height = -sign_ * root;
+    p.gradient = sign_ * Eigen::Vector2d(x, y) / root;
+    p.hessian << (r_ * r_ - y * y), x * y, x * y, (r_ * r_ - x * x);
+    p.hessian *= sign_ / (q * root);
+    return p;
   }
   double maxPrincipalCurvature() const override { return sign_ > 0 ? 1.0 / r_ : 0.0; }
   std::string describe() const override { return "test bowl"; }
 
  private:
-  double q(double x, double y) const { return r_ * r_ - x * x - y * y; }
   double r_;
   double sign_;  // +1: bowl (concave up), -1: dome (concave down)
 };
@@ -87,15 +86,14 @@ class SphericalBowl final : public Surface {
 class CylindricalTrough final : public Surface {
  public:
   explicit CylindricalTrough(double r) : r_(r) {}
-  double height(double x, double) const override { return -std::sqrt(r_ * r_ - x * x); }
-  Eigen::Vector2d gradient(double x, double) const override {
-    return {x / std::sqrt(r_ * r_ - x * x), 0.0};
-  }
-  Eigen::Matrix2d hessian(double x, double) const override {
-    const double s = std::sqrt(r_ * r_ - x * x);
-    Eigen::Matrix2d h = Eigen::Matrix2d::Zero();
-    h(0, 0) = r_ * r_ / (s * s * s);
-    return h;
+  spherical_robots::terrain::SurfacePoint evaluate(double x, double) const override {
+    const double root = std::sqrt(r_ * r_ - x * x);
+    spherical_robots::terrain::SurfacePoint p;
+    p.height = -root;
+    p.gradient = {x / root, 0.0};
+    p.hessian = Eigen::Matrix2d::Zero();
+    p.hessian(0, 0) = r_ * r_ / (root * root * root);
+    return p;
   }
   double maxPrincipalCurvature() const override { return 1.0 / r_; }
   std::string describe() const override { return "test trough"; }
