@@ -1,0 +1,336 @@
+#include "spherical_robots/ros/conversions.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+namespace spherical_robots::conversions {
+namespace {
+
+constexpr double kUnitTolerance = 1e-6;
+
+double& rateAt(terrain::DriveRates& rates, std::size_t i) {
+  std::array<double*, 3> fields{&rates.roll_rate, &rates.lateral_rate, &rates.turn_rate};
+  return *fields.at(i);
+}
+
+double rateAt(const terrain::DriveRates& rates, std::size_t i) {
+  return std::array<double, 3>{rates.roll_rate, rates.lateral_rate, rates.turn_rate}.at(i);
+}
+
+void requireFinite(double value, const std::string& field) {
+  if (!std::isfinite(value)) {
+    std::ostringstream what;
+    what << field << " = " << value << " is not finite";
+    throw std::invalid_argument(what.str());
+  }
+}
+
+void requireUnit(const Eigen::Vector3d& v, const std::string& field) {
+  if (std::abs(v.norm() - 1.0) > kUnitTolerance) {
+    std::ostringstream what;
+    what << field << " has norm " << v.norm() << ", expected a unit vector";
+    throw std::invalid_argument(what.str());
+  }
+}
+
+}  // namespace
+
+geometry_msgs::Point toPoint(const Eigen::Vector3d& p) {
+  geometry_msgs::Point msg;
+  msg.x = p.x();
+  msg.y = p.y();
+  msg.z = p.z();
+  return msg;
+}
+
+geometry_msgs::Vector3 toVector3(const Eigen::Vector3d& v) {
+  geometry_msgs::Vector3 msg;
+  msg.x = v.x();
+  msg.y = v.y();
+  msg.z = v.z();
+  return msg;
+}
+
+geometry_msgs::Quaternion toQuaternion(const Eigen::Quaterniond& q) {
+  const Eigen::Quaterniond unit = q.normalized();
+  geometry_msgs::Quaternion msg;
+  msg.x = unit.x();
+  msg.y = unit.y();
+  msg.z = unit.z();
+  msg.w = unit.w();
+  return msg;
+}
+
+Eigen::Vector3d fromPoint(const geometry_msgs::Point& p, const std::string& field) {
+  requireFinite(p.x, field + ".x");
+  requireFinite(p.y, field + ".y");
+  requireFinite(p.z, field + ".z");
+  return {p.x, p.y, p.z};
+}
+
+Eigen::Vector3d fromVector3(const geometry_msgs::Vector3& v, const std::string& field) {
+  requireFinite(v.x, field + ".x");
+  requireFinite(v.y, field + ".y");
+  requireFinite(v.z, field + ".z");
+  return {v.x, v.y, v.z};
+}
+
+geometry_msgs::TransformStamped toTransform(const Eigen::Vector3d& translation,
+                                            const Eigen::Quaterniond& rotation,
+                                            const std::string& parent, const std::string& child,
+                                            const ros::Time& stamp) {
+  geometry_msgs::TransformStamped msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = parent;
+  msg.child_frame_id = child;
+  msg.transform.translation = toVector3(translation);
+  msg.transform.rotation = toQuaternion(rotation);
+  return msg;
+}
+
+geometry_msgs::PoseStamped toPoseStamped(const Eigen::Vector3d& position,
+                                         const Eigen::Quaterniond& orientation,
+                                         const std::string& frame, const ros::Time& stamp) {
+  geometry_msgs::PoseStamped msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = frame;
+  msg.pose.position = toPoint(position);
+  msg.pose.orientation = toQuaternion(orientation);
+  return msg;
+}
+
+nav_msgs::Odometry toOdometry(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
+                              const Eigen::Vector3d& linear_velocity,
+                              const Eigen::Vector3d& angular_velocity, const std::string& frame,
+                              const std::string& child, const ros::Time& stamp) {
+  const Eigen::Matrix3d world_from_child = orientation.normalized().toRotationMatrix();
+  nav_msgs::Odometry msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = frame;
+  msg.child_frame_id = child;
+  msg.pose.pose.position = toPoint(position);
+  msg.pose.pose.orientation = toQuaternion(orientation);
+  msg.twist.twist.linear = toVector3(world_from_child.transpose() * linear_velocity);
+  msg.twist.twist.angular = toVector3(world_from_child.transpose() * angular_velocity);
+  return msg;
+}
+
+std::vector<std::string> actuatorNames(terrain::RobotType type) {
+  const auto actuated = terrain::actuatedRates(type);
+  const auto names = terrain::rateNames(type);
+  std::vector<std::string> result;
+  for (std::size_t i = 0; i < actuated.size(); ++i) {
+    if (actuated[i]) result.emplace_back(names[i]);
+  }
+  return result;
+}
+
+terrain::DriveRates ratesFromJointState(terrain::RobotType type, const sensor_msgs::JointState& msg) {
+  if (msg.velocity.size() < msg.name.size()) {
+    std::ostringstream what;
+    what << "JointState has " << msg.name.size() << " names but " << msg.velocity.size()
+         << " velocities";
+    throw std::invalid_argument(what.str());
+  }
+  const auto actuated = terrain::actuatedRates(type);
+  const auto names = terrain::rateNames(type);
+  terrain::DriveRates rates;
+  for (std::size_t i = 0; i < actuated.size(); ++i) {
+    if (!actuated[i]) continue;
+    const auto found = std::find(msg.name.begin(), msg.name.end(), names[i]);
+    if (found == msg.name.end()) {
+      throw std::invalid_argument("JointState lacks actuator '" + std::string(names[i]) +
+                                  "' of robot type " + terrain::toString(type));
+    }
+    const double velocity = msg.velocity[found - msg.name.begin()];
+    requireFinite(velocity, "velocity of actuator '" + std::string(names[i]) + "'");
+    rateAt(rates, i) = velocity;
+  }
+  return rates;
+}
+
+sensor_msgs::JointState jointStateFromRates(terrain::RobotType type, const terrain::DriveRates& rates,
+                                            const ros::Time& stamp) {
+  const auto actuated = terrain::actuatedRates(type);
+  const auto names = terrain::rateNames(type);
+  sensor_msgs::JointState msg;
+  msg.header.stamp = stamp;
+  for (std::size_t i = 0; i < actuated.size(); ++i) {
+    if (!actuated[i]) continue;
+    msg.name.emplace_back(names[i]);
+    msg.velocity.push_back(rateAt(rates, i));
+  }
+  return msg;
+}
+
+TeleopRates ratesFromTwist(terrain::RobotType type, const geometry_msgs::Twist& twist, double radius) {
+  if (!(radius > 0.0) || !std::isfinite(radius)) {
+    std::ostringstream what;
+    what << "radius = " << radius << " m must be positive and finite";
+    throw std::invalid_argument(what.str());
+  }
+  const Eigen::Vector3d linear = fromVector3(twist.linear, "linear");
+  const Eigen::Vector3d angular = fromVector3(twist.angular, "angular");
+  const bool rs = type == terrain::RobotType::RollingAndSteering;
+  const auto actuated = terrain::actuatedRates(type);
+
+  TeleopRates result;
+  auto ignoreIfSet = [&result](double value, const char* field) {
+    if (value != 0.0) result.ignored.emplace_back(field);
+  };
+  result.rates.roll_rate = linear.x() / radius;  // every type rolls forward
+  if (!rs && actuated[1]) {
+    result.rates.lateral_rate = -linear.y() / radius;
+  } else {
+    ignoreIfSet(linear.y(), "linear.y");
+  }
+  if (rs) {
+    result.rates.lateral_rate = -angular.z();
+  } else if (actuated[2]) {
+    result.rates.turn_rate = angular.z();
+  } else {
+    ignoreIfSet(angular.z(), "angular.z");
+  }
+  ignoreIfSet(linear.z(), "linear.z");
+  ignoreIfSet(angular.x(), "angular.x");
+  ignoreIfSet(angular.y(), "angular.y");
+  return result;
+}
+
+spherical_robots::TerrainState toTerrainStateMsg(terrain::RobotType type, terrain::ContactModel model,
+                                                 const terrain::TerrainState& state,
+                                                 const terrain::ContactGeometry& geometry,
+                                                 const terrain::DriveRates& realised,
+                                                 const ros::Time& stamp) {
+  spherical_robots::TerrainState msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = "world";
+  msg.robot_type = terrain::toString(type);
+  msg.contact_model = terrain::toString(model);
+  msg.contact_point = toPoint(geometry.contact_point);
+  msg.centre = toPoint(geometry.centre);
+  msg.normal = toVector3(geometry.heading_frame.col(2));
+  msg.heading = toVector3(geometry.heading_frame.col(0));
+  msg.psi = state.psi;
+  msg.phi = state.phi;
+  msg.roll_rate = realised.roll_rate;
+  msg.lateral_rate = realised.lateral_rate;
+  msg.turn_rate = realised.turn_rate;
+  return msg;
+}
+
+terrain::ContactGeometry contactGeometryFromMsg(const spherical_robots::TerrainState& msg) {
+  const Eigen::Vector3d normal = fromVector3(msg.normal, "normal");
+  const Eigen::Vector3d heading = fromVector3(msg.heading, "heading");
+  requireUnit(normal, "normal");
+  requireUnit(heading, "heading");
+  if (std::abs(normal.dot(heading)) > kUnitTolerance) {
+    std::ostringstream what;
+    what << "heading is not perpendicular to normal (h.n = " << normal.dot(heading) << ")";
+    throw std::invalid_argument(what.str());
+  }
+  if (!(normal.z() > 0.0)) {
+    std::ostringstream what;
+    what << "normal.z = " << normal.z() << " does not point up";
+    throw std::invalid_argument(what.str());
+  }
+  terrain::ContactGeometry geometry;
+  geometry.contact_point = fromPoint(msg.contact_point, "contact_point");
+  geometry.centre = fromPoint(msg.centre, "centre");
+  geometry.heading_frame.col(0) = heading;
+  geometry.heading_frame.col(1) = normal.cross(heading);
+  geometry.heading_frame.col(2) = normal;
+  geometry.gradient = -normal.head<2>() / normal.z();
+  return geometry;
+}
+
+spherical_robots::TrackingError toTrackingErrorMsg(const terrain::TrackingError& error,
+                                                   const terrain::DesiredPoint& desired,
+                                                   const std::string& frame, const ros::Time& stamp) {
+  spherical_robots::TrackingError msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = frame;
+  msg.desired = toPoint(desired.position);
+  msg.desired_velocity = toVector3(desired.velocity);
+  msg.error = toVector3(error.error);
+  msg.error_norm = error.norm;
+  msg.zeta = error.zeta;
+  return msg;
+}
+
+nav_msgs::Path sampledPath(const terrain::ReferencePath& path, const terrain::Surface& surface,
+                           int samples, const std::string& frame, const ros::Time& stamp) {
+  if (samples < 2) {
+    throw std::invalid_argument("sampledPath: samples = " + std::to_string(samples) + " < 2");
+  }
+  nav_msgs::Path msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = frame;
+  const double period = path.period();
+  for (int i = 0; i < samples; ++i) {
+    const double t = period * i / (samples - 1);
+    const terrain::DesiredPoint point = terrain::liftOntoSurface(path, surface, t);
+    msg.poses.push_back(toPoseStamped(point.position, Eigen::Quaterniond::Identity(), frame, stamp));
+  }
+  return msg;
+}
+
+visualization_msgs::Marker surfaceMesh(const terrain::Surface& surface, double half_extent,
+                                       double resolution, const std::string& frame,
+                                       const ros::Time& stamp) {
+  constexpr double kMaxCells = 1000.0;
+  if (!(half_extent > 0.0) || !(resolution > 0.0) || !std::isfinite(half_extent) ||
+      !std::isfinite(resolution) || 2.0 * half_extent / resolution > kMaxCells) {
+    std::ostringstream what;
+    what << "surfaceMesh: half_extent = " << half_extent << " m and resolution = " << resolution
+         << " m must be positive, finite and give at most " << kMaxCells << " cells a side";
+    throw std::invalid_argument(what.str());
+  }
+  const int cells = static_cast<int>(std::ceil(2.0 * half_extent / resolution));
+  const double spacing = 2.0 * half_extent / cells;
+  Eigen::MatrixXd height(cells + 1, cells + 1);
+  for (int i = 0; i <= cells; ++i) {
+    for (int j = 0; j <= cells; ++j) {
+      height(i, j) = surface.height(-half_extent + i * spacing, -half_extent + j * spacing);
+    }
+  }
+  const double low = height.minCoeff();
+  const double span = std::max(height.maxCoeff() - low, 1e-9);
+
+  visualization_msgs::Marker msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = frame;
+  msg.ns = "terrain";
+  msg.id = 0;
+  msg.type = visualization_msgs::Marker::TRIANGLE_LIST;
+  msg.action = visualization_msgs::Marker::ADD;
+  msg.pose.orientation.w = 1.0;
+  msg.scale.x = msg.scale.y = msg.scale.z = 1.0;
+  msg.color.r = msg.color.g = msg.color.b = msg.color.a = 1.0;
+  auto vertex = [&](int i, int j) {
+    msg.points.push_back(toPoint(
+        {-half_extent + i * spacing, -half_extent + j * spacing, height(i, j)}));
+    const double level = (height(i, j) - low) / span;  // 0 in the valleys, 1 on the ridges
+    std_msgs::ColorRGBA colour;
+    colour.r = static_cast<float>(0.25 + 0.5 * level);
+    colour.g = static_cast<float>(0.45 + 0.3 * level);
+    colour.b = static_cast<float>(0.25 + 0.1 * level);
+    colour.a = 1.0f;
+    msg.colors.push_back(colour);
+  };
+  // Two counter-clockwise (seen from above) triangles per cell.
+  constexpr std::array<std::pair<int, int>, 6> kCellTriangles{
+      {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}}};
+  for (int i = 0; i < cells; ++i) {
+    for (int j = 0; j < cells; ++j) {
+      for (const auto& [di, dj] : kCellTriangles) vertex(i + di, j + dj);
+    }
+  }
+  return msg;
+}
+
+}  // namespace spherical_robots::conversions

@@ -1,0 +1,86 @@
+#include "spherical_robots/ros/ros_parameter_source.hpp"
+
+#include <XmlRpcValue.h>
+
+#include <sstream>
+#include <stdexcept>
+
+#include "spherical_robots/config/robot_description.hpp"
+
+namespace spherical_robots {
+namespace {
+
+[[noreturn]] void throwBadType(const std::string& name, XmlRpc::XmlRpcValue& value,
+                               const char* expected) {
+  std::ostringstream what;
+  what << "parameter " << name << " = " << value.toXml() << " is not " << expected;
+  throw std::invalid_argument(what.str());
+}
+
+}  // namespace
+
+RosParameterSource::RosParameterSource(const ros::NodeHandle& nh) : nh_(nh) {}
+
+std::optional<double> RosParameterSource::number(const std::string& key) const {
+  XmlRpc::XmlRpcValue value;
+  if (!nh_.getParam(key, value)) return std::nullopt;
+  switch (value.getType()) {
+    case XmlRpc::XmlRpcValue::TypeDouble:
+      return static_cast<double>(value);
+    case XmlRpc::XmlRpcValue::TypeInt:
+      return static_cast<double>(static_cast<int>(value));
+    default:
+      throwBadType(resolve(key), value, "a number");
+  }
+}
+
+std::optional<std::string> RosParameterSource::text(const std::string& key) const {
+  XmlRpc::XmlRpcValue value;
+  if (!nh_.getParam(key, value)) return std::nullopt;
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeString) throwBadType(resolve(key), value, "a string");
+  return static_cast<std::string>(value);
+}
+
+std::string RosParameterSource::origin() const { return nh_.getNamespace(); }
+
+std::string RosParameterSource::resolve(const std::string& key) const { return nh_.resolveName(key); }
+
+std::string stringParam(const ros::NodeHandle& nh, const std::string& name, const std::string& fallback) {
+  return RosParameterSource(nh).text(name).value_or(fallback);
+}
+
+double numberParam(const ros::NodeHandle& nh, const std::string& name, double fallback) {
+  return config::finiteNumber(RosParameterSource(nh), name, fallback);
+}
+
+double positiveParam(const ros::NodeHandle& nh, const std::string& name, double fallback) {
+  const double value = numberParam(nh, name, fallback);
+  if (!(value > 0.0)) {
+    std::ostringstream what;
+    what << "parameter " << nh.resolveName(name) << " = " << value << " must be > 0";
+    throw std::invalid_argument(what.str());
+  }
+  return value;
+}
+
+bool boolParam(const ros::NodeHandle& nh, const std::string& name, bool fallback) {
+  XmlRpc::XmlRpcValue value;
+  if (!nh.getParam(name, value)) return fallback;
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeBoolean) {
+    throwBadType(nh.resolveName(name), value, "a boolean");
+  }
+  return static_cast<bool>(value);
+}
+
+double radiusFromRobotDescription(const ros::NodeHandle& nh) {
+  const std::string name = nh.resolveName("robot_description");
+  const auto urdf = RosParameterSource(nh).text("robot_description");
+  if (!urdf) throw std::invalid_argument("parameter " + name + " (the URDF) is not set");
+  try {
+    return config::sphereRadiusFromUrdf(*urdf);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("parameter " + name + ": " + e.what());
+  }
+}
+
+}  // namespace spherical_robots

@@ -1,0 +1,124 @@
+#pragma once
+// The one place where core types become ROS messages and back. Nodes call these and never build
+// a message field by field; every function that reads a message validates it and throws
+// std::invalid_argument saying which field is wrong, so a node can log, count and ignore it.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <geometry_msgs/Point.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <geometry_msgs/Quaternion.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <geometry_msgs/Twist.h>
+#include <geometry_msgs/Vector3.h>
+#include <nav_msgs/Odometry.h>
+#include <nav_msgs/Path.h>
+#include <ros/time.h>
+#include <sensor_msgs/JointState.h>
+#include <visualization_msgs/Marker.h>
+
+#include <string>
+#include <vector>
+
+#include "spherical_robots/TerrainState.h"
+#include "spherical_robots/TrackingError.h"
+#include "spherical_robots/terrain/pure_pursuit.hpp"
+#include "spherical_robots/terrain/reference_path.hpp"
+#include "spherical_robots/terrain/robot_type.hpp"
+#include "spherical_robots/terrain/surface.hpp"
+#include "spherical_robots/terrain/terrain_kinematics.hpp"
+
+namespace spherical_robots::conversions {
+
+// --- Eigen <-> geometry_msgs -----------------------------------------------------------------
+
+geometry_msgs::Point toPoint(const Eigen::Vector3d& p);
+geometry_msgs::Vector3 toVector3(const Eigen::Vector3d& v);
+/// Eigen (w, x, y, z) -> message (x, y, z, w), normalised.
+geometry_msgs::Quaternion toQuaternion(const Eigen::Quaterniond& q);
+/// @throw std::invalid_argument naming `field` if a coordinate is not finite.
+Eigen::Vector3d fromPoint(const geometry_msgs::Point& p, const std::string& field);
+Eigen::Vector3d fromVector3(const geometry_msgs::Vector3& v, const std::string& field);
+
+geometry_msgs::TransformStamped toTransform(const Eigen::Vector3d& translation,
+                                            const Eigen::Quaterniond& rotation,
+                                            const std::string& parent, const std::string& child,
+                                            const ros::Time& stamp);
+
+geometry_msgs::PoseStamped toPoseStamped(const Eigen::Vector3d& position,
+                                         const Eigen::Quaterniond& orientation,
+                                         const std::string& frame, const ros::Time& stamp);
+
+/// Pose of `child` in `frame` and its twist, REP 105 style: the twist is expressed in `child`.
+/// @param linear_velocity, angular_velocity [m/s], [rad/s] in the world (`frame`) axes.
+nav_msgs::Odometry toOdometry(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
+                              const Eigen::Vector3d& linear_velocity,
+                              const Eigen::Vector3d& angular_velocity, const std::string& frame,
+                              const std::string& child, const ros::Time& stamp);
+
+// --- Drive rates <-> actuators -----------------------------------------------------------------
+
+/// The type's actuator names in DriveRates order (3R theta, phi, psi; 2R theta, phi; RT theta,
+/// psi; RS alpha, phi), as on actuators/command and actuators/state.
+std::vector<std::string> actuatorNames(terrain::RobotType type);
+
+/// Drive rates [rad/s] from the velocities of a JointState; rates the type does not actuate are 0,
+/// names the type does not have are ignored.
+/// @throw std::invalid_argument if an actuator of the type is missing, the velocity array is
+/// shorter than the name array, or a velocity is not finite.
+terrain::DriveRates ratesFromJointState(terrain::RobotType type, const sensor_msgs::JointState& msg);
+
+/// A JointState with the type's actuator names and their rates [rad/s] as velocities (no
+/// positions, no efforts).
+sensor_msgs::JointState jointStateFromRates(terrain::RobotType type, const terrain::DriveRates& rates,
+                                            const ros::Time& stamp);
+
+/// Teleoperation: a body twist mapped to drive rates of a sphere of radius R [m].
+struct TeleopRates {
+  terrain::DriveRates rates;
+  std::vector<std::string> ignored;  ///< non-zero twist fields the type cannot follow
+};
+
+/// linear.x = v -> roll rate v / R (RS: alpha_dot); linear.y = v_y -> lateral rate -v_y / R (3R, 2R;
+/// the centre moves with -R phi_dot l); angular.z -> turn rate (3R, RT). RS steers by tilting:
+/// angular.z -> tilt rate phi_dot = -angular.z [rad/s], which turns it the same way (phi < 0
+/// turns left, eq 44). Every other non-zero field is listed in `ignored`.
+/// @throw std::invalid_argument on a non-finite field or radius <= 0.
+TeleopRates ratesFromTwist(terrain::RobotType type, const geometry_msgs::Twist& twist, double radius);
+
+// --- Terrain state and tracking ----------------------------------------------------------------
+
+/// The plant's state message, in frame "world".
+/// @param realised the rates the robot realises (TerrainKinematics::realisedRates).
+spherical_robots::TerrainState toTerrainStateMsg(terrain::RobotType type, terrain::ContactModel model,
+                                                 const terrain::TerrainState& state,
+                                                 const terrain::ContactGeometry& geometry,
+                                                 const terrain::DriveRates& realised,
+                                                 const ros::Time& stamp);
+
+/// The contact geometry a TerrainState message describes: P0, centre, R_L = [h, n x h, n] and the
+/// gradient (f_x, f_y) = -(n_x, n_y) / n_z.
+/// @throw std::invalid_argument if a field is not finite, n or h is not a unit vector, h is not
+/// perpendicular to n, or n does not point up (tolerance 1e-6).
+terrain::ContactGeometry contactGeometryFromMsg(const spherical_robots::TerrainState& msg);
+
+spherical_robots::TrackingError toTrackingErrorMsg(const terrain::TrackingError& error,
+                                                   const terrain::DesiredPoint& desired,
+                                                   const std::string& frame, const ros::Time& stamp);
+
+// --- Visualisation ------------------------------------------------------------------------------
+
+/// One period of the path lifted onto the surface, `samples` poses (closing the loop).
+/// @throw std::invalid_argument if samples < 2.
+nav_msgs::Path sampledPath(const terrain::ReferencePath& path, const terrain::Surface& surface,
+                           int samples, const std::string& frame, const ros::Time& stamp);
+
+/// The surface over the square [-half_extent, half_extent]^2 [m] as a TRIANGLE_LIST mesh with a
+/// grid spacing of `resolution` [m], coloured by height.
+/// @throw std::invalid_argument on a non-positive or non-finite extent or resolution, or more than
+/// 1000 x 1000 cells.
+visualization_msgs::Marker surfaceMesh(const terrain::Surface& surface, double half_extent,
+                                       double resolution, const std::string& frame,
+                                       const ros::Time& stamp);
+
+}  // namespace spherical_robots::conversions

@@ -1,0 +1,58 @@
+#pragma once
+// Parameters from the ROS parameter server, read through the same config::ParameterSource
+// interface as the YAML files, so a node parses config/terrain.yaml (loaded by the launch file
+// with rosparam) with the very parser sphere_sim uses.
+
+#include <ros/node_handle.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "spherical_robots/config/parameter_source.hpp"
+
+namespace spherical_robots {
+
+/// Keys are '/'-separated names relative to the node handle's namespace, e.g.
+/// "terrain/gains/3R/k_theta". Integers count as numbers.
+class RosParameterSource final : public config::ParameterSource {
+ public:
+  explicit RosParameterSource(const ros::NodeHandle& nh);
+  std::optional<double> number(const std::string& key) const override;
+  std::optional<std::string> text(const std::string& key) const override;
+  /// The namespace, e.g. "/sphere" or "/sphere/terrain_kinematics".
+  std::string origin() const override;
+
+  /// The fully resolved name of key, for error messages.
+  std::string resolve(const std::string& key) const;
+
+ private:
+  ros::NodeHandle nh_;
+};
+
+/// Typed parameter helpers for node set-up. Each returns the fallback when the parameter is absent
+/// and throws std::invalid_argument naming the resolved parameter and its value when it is bad.
+std::string stringParam(const ros::NodeHandle& nh, const std::string& name, const std::string& fallback);
+/// A finite number.
+double numberParam(const ros::NodeHandle& nh, const std::string& name, double fallback);
+/// A finite number > 0.
+double positiveParam(const ros::NodeHandle& nh, const std::string& name, double fallback);
+bool boolParam(const ros::NodeHandle& nh, const std::string& name, bool fallback);
+
+/// String parameter `name` (or the fallback text) turned into a value by parse, e.g.
+/// terrain::robotTypeFromString; parse's std::invalid_argument is rethrown naming the parameter.
+template <typename Parse>
+auto parsedParam(const ros::NodeHandle& nh, const std::string& name, const std::string& fallback,
+                 Parse parse) {
+  const std::string text = stringParam(nh, name, fallback);
+  try {
+    return parse(text);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("parameter " + nh.resolveName(name) + " = '" + text + "': " + e.what());
+  }
+}
+
+/// The sphere radius [m] from the URDF in parameter `robot_description` of nh (the base_link
+/// collision sphere). @throw std::invalid_argument if the parameter is missing or the URDF bad.
+double radiusFromRobotDescription(const ros::NodeHandle& nh);
+
+}  // namespace spherical_robots

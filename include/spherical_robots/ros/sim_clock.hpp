@@ -1,0 +1,46 @@
+#pragma once
+// Drives a fixed-step simulation, either owning simulated time or following ROS time.
+
+#include <ros/node_handle.h>
+#include <ros/publisher.h>
+#include <ros/timer.h>
+#include <ros/wall_timer.h>
+
+#include <functional>
+
+namespace spherical_robots {
+
+/// With speedup > 0 it owns simulated time (there must be exactly one such clock per master, and
+/// /use_sim_time must be true): a wall timer advances /clock by `step` every step / speedup wall
+/// seconds and then calls tick with the new time, so a slow tick lowers the speed-up but never
+/// changes the steps. With speedup <= 0 it publishes nothing: a ros::Timer calls tick every
+/// `step` of ROS time, which is wall time (hardware in the loop) or a clock someone else
+/// publishes (rosbag play --clock). Ticks run on the node handle's callback queue.
+class SimClock {
+ public:
+  using Tick = std::function<void(const ros::Time& now)>;
+
+  /// @param step [s] > 0, @param speedup [-] finite. @throw std::invalid_argument on a bad step or
+  /// speedup, or on speedup > 0 while /use_sim_time is false.
+  SimClock(ros::NodeHandle nh, double step, double speedup, Tick tick);
+
+  bool ownsClock() const { return speedup_ > 0.0; }
+  double step() const { return step_; }
+  /// ROS seconds per wall second since the first tick [-]; NaN before the second tick.
+  double realTimeFactor() const;
+
+ private:
+  void onTick(const ros::Time& now);
+
+  double step_;
+  double speedup_;
+  Tick tick_;
+  ros::Publisher clock_pub_;
+  ros::WallTimer wall_timer_;
+  ros::Timer timer_;
+  ros::Time now_;
+  ros::Time first_tick_;
+  ros::WallTime first_tick_wall_;
+};
+
+}  // namespace spherical_robots
