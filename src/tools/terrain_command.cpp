@@ -1,0 +1,242 @@
+#include "terrain_command.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "spherical_robots/config/robot_description.hpp"
+#include "spherical_robots/config/terrain_config.hpp"
+#include "spherical_robots/config/yaml_parameter_source.hpp"
+
+namespace spherical_robots::sphere_sim {
+namespace {
+
+constexpr double kConvergedError = 0.1;  // [m]: the paper's "converged"
+constexpr double kSettleTime = 40.0;     // [s]: the paper's figures settle by then
+/// Step counts beyond this are a typo (--dt 5e-9), not a batch run; it also keeps them exact
+/// in a double and a long.
+constexpr double kMaxSteps = 1e9;
+/// How close a ratio of times must be to a whole number: row times are exact multiples of dt.
+constexpr double kWholeTolerance = 1e-9;
+
+const char* const kColumns[] = {"t",  "x0",     "y0",        "z0",           "xd",       "yd",
+                                "zd", "e_norm", "zeta",      "psi",          "phi",      "cx",
+                                "cy", "cz",     "roll_rate", "lateral_rate", "turn_rate"};
+
+/// span / step, which must be a whole number of steps; `what` names the options for the message.
+long wholeSteps(double span, double step, const std::string& what) {
+  const double steps = span / step;
+  if (!(steps <= kMaxSteps)) {
+    throw InvalidInput(what + " is " + formatNumber(steps) + " steps, more than the " +
+                       formatNumber(kMaxSteps) + " a run allows");
+  }
+  const double whole = std::round(steps);
+  if (std::abs(steps - whole) > kWholeTolerance * steps) {
+    throw InvalidInput(what + " is " + formatNumber(steps) + " steps, not a whole number");
+  }
+  return static_cast<long>(whole);
+}
+
+double radiusFromUrdf(const std::string& path) {
+  const std::string xml = config::readTextFile(path);  // its error names the path
+  try {
+    return config::sphereRadiusFromUrdf(xml);
+  } catch (const std::invalid_argument& error) {
+    throw InvalidInput(path + ": " + error.what());
+  }
+}
+
+TerrainRunSettings settingsFrom(const ParsedOptions& options) {
+  TerrainRunSettings settings;
+  settings.robot = terrain::robotTypeFromString(options.text("robot"));
+  settings.path = options.text("path");
+  settings.model = terrain::contactModelFromString(options.text("model"));
+  settings.duration = options.number("duration");
+  settings.dt = options.number("dt");
+  settings.log_rate = options.number("log-rate");
+  settings.config_dir = configDirectory(options);
+  return settings;
+}
+
+int runTerrainCommand(const ParsedOptions& options, std::ostream& out) {
+  const TerrainRun run(settingsFrom(options));
+  OutputFile file(options.text("out"));
+  const terrain::TrackingSummary summary = run.simulate(&file.stream());
+  file.commit();
+  out << run.describe(summary) << '\n';
+  return kSuccess;
+}
+
+const char* const kDescription =
+    R"(The run starts at the origin with psi = phi = 0 and integrates the closed loop (pure
+pursuit evaluated at every RK4 stage) with a fixed step. The scenario (surface, paths, gains,
+RS tilt limit) is DIR/config/terrain.yaml; the sphere's radius is the base_link sphere of
+DIR/urdf/terrain_robot.urdf.
+
+CSV columns (SI units, radians; one row every 1/log-rate s from t = 0 through the duration):
+  t             time [s]
+  x0,y0,z0      contact point P0 [m]; z0 = f(x0, y0) on the surface
+  xd,yd,zd      desired point p_d(t) on the surface [m]
+  e_norm        tracking error |e_t| = |p_d - P0| [m] (eq 53)
+  zeta          angle [rad] from the heading h to e_t's projection on the tangent plane,
+                right-handed about the normal n: positive when the target is to the left
+  psi           heading [rad], right-handed about n relative to the tangent frame
+  phi           RS tilt [rad]; 0 for 3R, 2R and RT
+  cx,cy,cz      sphere centre P0 + R n [m] (eq 51)
+  roll_rate     realised theta_dot [rad/s] about l (RS: alpha_dot about the tilted axle)
+  lateral_rate  realised phi_dot [rad/s] about h (sideways roll; RS: tilt rate); 0 for RT
+  turn_rate     realised psi_dot [rad/s] about n; 0 for 2R; RS: -alpha_dot sin(phi) (eq 44)
+Numbers are written in the shortest form that reads back as the same double.
+
+stdout: one line: robot, path, model, the first logged time with |e_t| < 0.1 m ("never" if
+none) and the mean and max |e_t| over the logged rows with t >= 40 s.
+
+Exit status: 0 success; 2 usage error (unknown option, unknown robot/path/model, malformed
+number, missing option); 4 invalid input (non-finite or out-of-range number, duration or log
+period not a whole number of steps, unreadable config, a radius that breaks single-point
+contact, a run that diverges): one-line error on stderr and no output file.
+)";
+
+}  // namespace
+
+TerrainRun::TerrainRun(const TerrainRunSettings& settings) : settings_(settings) {
+  if (!(settings.dt > 0.0)) {
+    throw InvalidInput("--dt must be > 0 s, got " + formatNumber(settings.dt));
+  }
+  if (!(settings.duration >= 0.0)) {
+    throw InvalidInput("--duration must be >= 0 s, got " + formatNumber(settings.duration));
+  }
+  if (!(settings.log_rate > 0.0)) {
+    throw InvalidInput("--log-rate must be > 0 Hz, got " + formatNumber(settings.log_rate));
+  }
+  const std::string per_step = " s / --dt " + formatNumber(settings.dt) + " s";
+  const long steps = wholeSteps(settings.duration, settings.dt,
+                                "--duration " + formatNumber(settings.duration) + per_step);
+  const double log_period = 1.0 / settings.log_rate;
+  steps_per_row_ = wholeSteps(log_period, settings.dt,
+                              "--log-rate " + formatNumber(settings.log_rate) + " Hz: its period " +
+                                  formatNumber(log_period) + per_step);
+  if (steps_per_row_ < 1) {
+    throw InvalidInput("--log-rate " + formatNumber(settings.log_rate) +
+                       " Hz is above the step rate 1/--dt");
+  }
+  if (steps % steps_per_row_ != 0) {
+    throw InvalidInput("--duration " + formatNumber(settings.duration) +
+                       " s is not a whole number of log periods (1/--log-rate = " +
+                       formatNumber(log_period) + " s)");
+  }
+  rows_ = steps / steps_per_row_;
+
+  const config::TerrainConfig scenario = config::loadTerrainConfig(
+      config::YamlParameterSource(settings.config_dir + "/config/terrain.yaml"));
+  const double radius = radiusFromUrdf(settings.config_dir + "/urdf/terrain_robot.urdf");
+  surface_ = config::makeSurface(scenario.surface);
+  path_ = config::makePath(settings.path, scenario);
+  kinematics_ = std::make_unique<terrain::TerrainKinematics>(*surface_, settings.robot, radius,
+                                                             settings.model, scenario.tilt_limit);
+  controller_ = std::make_unique<terrain::PurePursuitController>(
+      settings.robot, scenario.gains.at(settings.robot), radius);
+}
+
+terrain::TrackingSummary TerrainRun::simulate(std::ostream* csv) const {
+  terrain::TerrainSimulation simulation(*kinematics_, *controller_, *path_,
+                                        terrain::TerrainState{});
+  terrain::TrackingSummary summary(kConvergedError, kSettleTime);
+  std::unique_ptr<CsvWriter> writer;
+  if (csv != nullptr) {
+    writer = std::make_unique<CsvWriter>(
+        *csv, std::vector<std::string>(std::begin(kColumns), std::end(kColumns)));
+  }
+
+  for (long row = 0;; ++row) {
+    const terrain::TerrainSample sample = simulation.sample();
+    summary.add(sample.t, sample.error.norm);
+    if (writer) {
+      const Eigen::Vector3d& p0 = sample.geometry.contact_point;
+      const Eigen::Vector3d& pd = sample.desired.position;
+      const Eigen::Vector3d& centre = sample.geometry.centre;
+      writer->row({sample.t, p0.x(), p0.y(), p0.z(), pd.x(), pd.y(), pd.z(), sample.error.norm,
+                   sample.error.zeta, sample.state.psi, sample.state.phi, centre.x(), centre.y(),
+                   centre.z(), sample.rates.roll_rate, sample.rates.lateral_rate,
+                   sample.rates.turn_rate});
+    }
+    if (row == rows_) break;
+    for (long step = 0; step < steps_per_row_; ++step) simulation.step(settings_.dt);
+  }
+  return summary;
+}
+
+std::string TerrainRun::describe(const terrain::TrackingSummary& summary) const {
+  std::ostringstream line;
+  line << "robot " << terrain::toString(settings_.robot) << ", path " << settings_.path
+       << ", model " << terrain::toString(settings_.model) << ": |e_t| < " << summary.threshold()
+       << " m ";
+  if (std::isnan(summary.timeToConverge())) {
+    line << "never";
+  } else {
+    line << "at t = " << summary.timeToConverge() << " s";
+  }
+  line << "; for t >= " << summary.settleTime() << " s ";
+  if (std::isnan(summary.meanAfterSettling())) {
+    line << "no rows (duration " << settings_.duration << " s)";
+  } else {
+    line << "mean |e_t| " << summary.meanAfterSettling() << " m, max " << summary.maxAfterSettling()
+         << " m";
+  }
+  return line.str();
+}
+
+Subcommand terrainCommand() {
+  const TerrainRunSettings defaults;
+  Subcommand command;
+  command.name = "terrain";
+  command.summary =
+      "Closed-loop run of a 3R, 2R, RT or RS robot tracking a path over the terrain of eq 59.";
+  command.description = kDescription;
+  command.options = {
+      {"robot",
+       "TYPE",
+       "Robot type: 3R (rolls about l and h, turns about n), 2R (rolls about l and h),\n"
+       "RT (rolls about l, turns about n), RS (rolls about a tilted axle, steers by tilting).",
+       "",
+       true,
+       {"3R", "2R", "RT", "RS"}},
+      {"path",
+       "NAME",
+       "Reference path: circle (radius and rate from config/terrain.yaml, eq 60 corrected) or\n"
+       "diamond (counter-clockwise from (d, 0) at constant XY speed).",
+       "",
+       true,
+       {"circle", "diamond"}},
+      {"model",
+       "NAME",
+       "Contact model: paper (the rates move the contact point, eq 28) or rolling (they are the\n"
+       "shell's body rates and move the centre; see docs/conventions.md).",
+       terrain::toString(defaults.model),
+       false,
+       {"paper", "rolling"}},
+      {"duration",
+       "SECONDS",
+       "Simulated time [s], >= 0; a whole number of log periods.",
+       formatNumber(defaults.duration),
+       false,
+       {}},
+      {"dt",
+       "SECONDS",
+       "Fixed RK4 step [s], > 0; the duration must be a whole number of steps.",
+       formatNumber(defaults.dt),
+       false,
+       {}},
+      {"log-rate",
+       "HZ",
+       "CSV rows per second [Hz], > 0; 1/log-rate must be a whole number of steps.",
+       formatNumber(defaults.log_rate),
+       false,
+       {}},
+      configOption(),
+      outOption("CSV file to write (columns below)."),
+  };
+  command.run = runTerrainCommand;
+  return command;
+}
+
+}  // namespace spherical_robots::sphere_sim

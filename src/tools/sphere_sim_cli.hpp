@@ -1,0 +1,155 @@
+#pragma once
+// The command-line machinery every sphere_sim subcommand shares (DESIGN.md, "sphere_sim"):
+// dispatch, option tables with --help, option values that may begin with '-', numbers that
+// parse nan/inf and then reject them, comma-separated lists, exit statuses, CSV rows at full
+// precision and output files that appear only when complete.
+//
+// A subcommand is a table of OptionSpec plus a run function; see terrain_command.cpp.
+
+#include <cstddef>
+#include <fstream>
+#include <functional>
+#include <initializer_list>
+#include <map>
+#include <memory>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace spherical_robots::sphere_sim {
+
+/// Process exit statuses, the same for every subcommand.
+enum ExitStatus : int {
+  kSuccess = 0,
+  kInternalError = 1,  ///< a bug (e.g. std::logic_error), not the user's fault
+  kUsageError = 2,     ///< unknown option, malformed value, missing required option
+  kNoSolution = 3,     ///< well-posed problem without a solution; the output file is written
+  kInvalidInput = 4,   ///< invalid or degenerate input; one-line error, no output file
+};
+
+/// A command line that does not follow the subcommand's syntax (exit 2, usage on stderr).
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A syntactically fine command line whose values make no sense (exit 4), e.g. a non-finite number
+/// or a negative step. The core's std::invalid_argument is treated the same way.
+class InvalidInput : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// One row of a subcommand's option table.
+struct OptionSpec {
+  std::string name;           ///< without the leading "--", e.g. "duration"
+  std::string value_name;     ///< placeholder in the usage line, e.g. "SECONDS"; empty for a flag
+  std::string help;           ///< meaning and units, for --help
+  std::string default_value;  ///< used when the option is absent; empty: no default
+  bool required = false;      ///< absent and required is a usage error
+  std::vector<std::string> choices;  ///< if not empty, the only values accepted
+};
+
+/// The options of one invocation, checked against the table: every name is known, every value
+/// present, every choice valid, every required option given. Typed access parses on demand.
+class ParsedOptions {
+ public:
+  ParsedOptions(std::string command, std::map<std::string, std::string> values,
+                std::map<std::string, std::string> defaults);
+
+  /// Given on the command line (defaults do not count).
+  bool given(const std::string& name) const;
+  /// The value, or the table's default. @throw std::logic_error if the option has neither.
+  const std::string& text(const std::string& name) const;
+  /// A flag's presence.
+  bool flag(const std::string& name) const { return given(name); }
+  /// The value as a finite double. @throw UsageError if it is not a number, InvalidInput if it
+  /// is nan, inf or out of a double's range.
+  double number(const std::string& name) const;
+  /// A comma-separated list of finite doubles; count 0 accepts any length >= 1.
+  /// @throw UsageError on a malformed element or a wrong count, InvalidInput on a non-finite one.
+  std::vector<double> numberList(const std::string& name, std::size_t count = 0) const;
+
+ private:
+  std::string command_;
+  std::map<std::string, std::string> values_;
+  std::map<std::string, std::string> defaults_;
+};
+
+/// A subcommand: its table and what it does. run returns kSuccess or kNoSolution, writes its
+/// summary to out, and throws UsageError, InvalidInput or std::invalid_argument on bad input.
+struct Subcommand {
+  std::string name;         ///< e.g. "terrain"
+  std::string summary;      ///< one line for `sphere_sim --help`
+  std::string description;  ///< printed after the options by `sphere_sim NAME --help`
+  std::vector<OptionSpec> options;
+  std::function<int(const ParsedOptions& options, std::ostream& out)> run;
+};
+
+/// Checks args (everything after the subcommand name) against the table. A token "--name"
+/// names an option; if the option takes a value, the next token is its value whatever it
+/// starts with, so negative numbers need no quoting. "--name=value" works as well.
+/// @throw UsageError on an unknown, repeated or incomplete option, a bad choice, a positional
+/// argument or a missing required option.
+ParsedOptions parseOptions(const Subcommand& command, const std::vector<std::string>& args);
+
+/// `sphere_sim NAME --help`: usage line, options with defaults, description.
+void printHelp(const Subcommand& command, std::ostream& out);
+
+/// Runs sphere_sim with args (argv without the program name): dispatches to the subcommand,
+/// prints help, maps errors to exit statuses and messages on err. Returns the exit status.
+int runSphereSim(const std::vector<Subcommand>& commands, const std::vector<std::string>& args,
+                 std::ostream& out, std::ostream& err);
+
+/// The `--out FILE` option every subcommand has.
+OptionSpec outOption(const std::string& what);
+/// The `--config DIR` option of subcommands that read config/ and urdf/.
+OptionSpec configOption();
+/// The directory holding config/ and urdf/: --config if given, else the package's share directory.
+std::string configDirectory(const ParsedOptions& options);
+
+/// An output file that appears under its name only when committed: it is written to a temporary
+/// file beside it and renamed, so a run that fails half-way (exit 4) leaves no file behind.
+class OutputFile {
+ public:
+  /// @throw InvalidInput naming the path if the temporary file cannot be created.
+  explicit OutputFile(std::string path);
+  ~OutputFile();
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+
+  std::ostream& stream() { return stream_; }
+  /// Flushes, closes and renames into place. @throw std::runtime_error naming the path on a write
+  /// error.
+  void commit();
+
+ private:
+  std::string path_;
+  std::string temporary_path_;
+  std::unique_ptr<char[]> buffer_;  // a large buffer: rows are written without per-row flushes
+  std::ofstream stream_;
+  bool committed_ = false;
+};
+
+/// The shortest decimal text that reads back as the same double (full precision, no noise
+/// digits: 0.1 prints as "0.1").
+std::string formatNumber(double value);
+
+/// CSV output: a header row, then rows of numbers as formatNumber writes them (no blanks, no text).
+class CsvWriter {
+ public:
+  /// Writes the header. The stream must outlive the writer.
+  CsvWriter(std::ostream& out, std::vector<std::string> columns);
+  /// @throw std::logic_error if the number of values is not the number of columns,
+  /// std::runtime_error naming the column if a value is not finite.
+  void row(std::initializer_list<double> values);
+  const std::vector<std::string>& columns() const { return columns_; }
+
+ private:
+  std::ostream& out_;
+  std::vector<std::string> columns_;
+  std::string line_;  // reused for every row, so writing allocates nothing after the first
+};
+
+}  // namespace spherical_robots::sphere_sim
