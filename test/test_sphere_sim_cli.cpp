@@ -1,0 +1,488 @@
+// sphere_sim's command-line contract (DESIGN.md, "sphere_sim") and the terrain subcommand's CSV,
+// checked by running the built executable against independent truth: the closed forms of the
+// surface (eq 59) and the paths, and the geometry every row must satisfy.
+// The option parser shared by all subcommands is also tested in-process.
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "sphere_sim_cli.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace cli = spherical_robots::sphere_sim;
+
+constexpr double kRadius = 0.2;          // urdf/terrain_robot.urdf base_link sphere [m]
+constexpr double kAmplitude = 0.2;       // config/terrain.yaml cosine a [m]
+constexpr double kFrequency = 2.0;       // cosine w [rad/m]
+constexpr double kCircleRadius = 2.0;    // [m]
+constexpr double kCircleRate = 0.05;     // [rad/s]
+constexpr double kDiamondHalf = 2.0;     // [m]
+constexpr double kDiamondSpeed = 0.1;    // [m/s]
+constexpr double kTiltLimit = M_PI / 3;  // RS |phi| limit [rad]
+constexpr double kTight = 1e-12;         // closed forms vs. full-precision output
+
+const std::vector<std::string> kRequiredColumns = {"t",  "x0",     "y0",   "z0",  "xd", "yd",
+                                                   "zd", "e_norm", "zeta", "psi", "phi"};
+
+double surfaceHeight(double x, double y) {
+  return kAmplitude * (std::cos(kFrequency * x) + std::cos(kFrequency * y) - 2.0);
+}
+
+/// word occurs in text with no letter, digit or '_' on either side.
+bool mentionsWord(const std::string& text, const std::string& word) {
+  const auto isWordChar = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+  };
+  for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) {
+    const bool starts = at == 0 || !isWordChar(text[at - 1]);
+    const bool ends = at + word.size() == text.size() || !isWordChar(text[at + word.size()]);
+    if (starts && ends) return true;
+  }
+  return false;
+}
+
+struct Process {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string readFile(const fs::path& path) {
+  std::ifstream file(path);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+/// A table read back from the CSV: every cell must be a complete, finite number.
+struct Csv {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+
+  std::size_t column(const std::string& name) const {
+    for (std::size_t i = 0; i < header.size(); ++i) {
+      if (header[i] == name) return i;
+    }
+    ADD_FAILURE() << "no column " << name;
+    return 0;
+  }
+  double at(std::size_t row, const std::string& name) const {
+    return rows.at(row).at(column(name));
+  }
+};
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> cells;
+  std::istringstream stream(line);
+  for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
+  return cells;
+}
+
+Csv readCsv(const fs::path& path) {
+  Csv csv;
+  std::ifstream file(path);
+  std::string line;
+  if (!std::getline(file, line)) {
+    ADD_FAILURE() << path << " is empty";
+    return csv;
+  }
+  csv.header = split(line);
+  while (std::getline(file, line)) {
+    std::vector<double> row;
+    for (const std::string& cell : split(line)) {
+      char* end = nullptr;
+      const double value = std::strtod(cell.c_str(), &end);
+      EXPECT_TRUE(!cell.empty() && *end == '\0' && std::isfinite(value))
+          << "cell '" << cell << "' in row " << csv.rows.size() << " is not a finite number";
+      row.push_back(value);
+    }
+    EXPECT_EQ(row.size(), csv.header.size()) << "row " << csv.rows.size();
+    csv.rows.push_back(row);
+  }
+  return csv;
+}
+
+class SphereSimTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string pattern = (fs::temp_directory_path() / "sphere_sim_test.XXXXXX").string();
+    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+    dir_ = pattern;
+    out_ = dir_ / "run.csv";
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  /// Runs sphere_sim with args in directory cwd (default: the test's directory).
+  Process run(const std::vector<std::string>& args, const fs::path& cwd = {}) const {
+    std::vector<std::string> argv_text = {SPHERE_SIM_EXECUTABLE};
+    argv_text.insert(argv_text.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& arg : argv_text) argv.push_back(arg.data());
+    argv.push_back(nullptr);
+
+    const fs::path out_path = dir_ / "stdout.txt";
+    const fs::path err_path = dir_ / "stderr.txt";
+    const std::string work_dir = (cwd.empty() ? dir_ : cwd).string();
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addchdir_np(&actions, work_dir.c_str());
+    posix_spawn_file_actions_addopen(&actions, 1, out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
+    posix_spawn_file_actions_addopen(&actions, 2, err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
+    pid_t pid = 0;
+    const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    Process process;
+    if (spawned != 0) {
+      ADD_FAILURE() << "cannot start " << argv[0];
+      return process;
+    }
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    process.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    process.out = readFile(out_path);
+    process.err = readFile(err_path);
+    return process;
+  }
+
+  /// `sphere_sim terrain` with the source tree's config and urdf, writing out_.
+  Process terrain(const std::vector<std::string>& args) const {
+    std::vector<std::string> full = {"terrain", "--config", SPHERICAL_ROBOTS_SOURCE_DIR, "--out",
+                                     out_.string()};
+    full.insert(full.end(), args.begin(), args.end());
+    return run(full);
+  }
+
+  /// Only the captured stdout/stderr may be in the directory: no output, no partial file.
+  void expectNoOutputFiles() const {
+    for (const auto& entry : fs::directory_iterator(dir_)) {
+      const std::string name = entry.path().filename().string();
+      EXPECT_TRUE(name == "stdout.txt" || name == "stderr.txt") << "left behind: " << name;
+    }
+  }
+
+  fs::path dir_;
+  fs::path out_;
+};
+
+// --- exit statuses -----------------------------------------------------------------------------
+
+TEST_F(SphereSimTest, UsageErrorsExitTwoWithUsageAndNoOutput) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--robot", "3R", "--path", "circle", "--speed", "1"}, "--speed"},
+      {{"--robot", "XX", "--path", "circle"}, "XX"},
+      {{"--robot", "3R", "--path", "square"}, "square"},
+      {{"--robot", "3R", "--path", "circle", "--model", "slipping"}, "slipping"},
+      {{"--robot", "3R", "--path", "circle", "--dt", "0.0x5"}, "0.0x5"},
+      {{"--robot", "3R", "--path", "circle", "--duration", "ten"}, "ten"},
+      {{"--robot", "3R", "--path", "circle", "--duration", ""}, "--duration"},
+      {{"--path", "circle"}, "--robot"},
+      {{"--robot", "3R", "--path", "circle", "--dt"}, "--dt"},
+      {{"--robot", "3R", "--path", "circle", "--dt", "--duration", "5"}, "--dt"},
+      {{"--robot", "3R", "--path", "circle", "--dt", "0.01", "--dt", "0.02"}, "--dt"},
+      {{"--robot", "3R", "--path", "circle", "stray"}, "stray"},
+  };
+  for (const auto& [args, culprit] : cases) {
+    const Process process = terrain(args);
+    EXPECT_EQ(process.status, cli::kUsageError) << culprit << ": " << process.err;
+    EXPECT_NE(process.err.find(culprit), std::string::npos) << process.err;
+    EXPECT_NE(process.err.find("usage: sphere_sim terrain"), std::string::npos) << process.err;
+    expectNoOutputFiles();
+  }
+}
+
+TEST_F(SphereSimTest, MissingOutIsAUsageError) {
+  const Process process = run(
+      {"terrain", "--robot", "3R", "--path", "circle", "--config", SPHERICAL_ROBOTS_SOURCE_DIR});
+  EXPECT_EQ(process.status, cli::kUsageError);
+  EXPECT_NE(process.err.find("--out"), std::string::npos) << process.err;
+}
+
+TEST_F(SphereSimTest, UnknownOrMissingSubcommandIsAUsageError) {
+  EXPECT_EQ(run({"teleport", "--out", out_.string()}).status, cli::kUsageError);
+  const Process bare = run({});
+  EXPECT_EQ(bare.status, cli::kUsageError);
+  EXPECT_NE(bare.err.find("terrain"), std::string::npos);
+  // The contract checker treats a non-zero `SUBCOMMAND --help` as "not offered".
+  EXPECT_NE(run({"teleport", "--help"}).status, 0);
+}
+
+TEST_F(SphereSimTest, InvalidInputExitsFourWithOneLineAndNoOutput) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--dt", "nan"}, "--dt"},
+      {{"--dt", "-1"}, "--dt"},
+      {{"--dt", "0"}, "--dt"},
+      {{"--duration", "inf"}, "--duration"},
+      {{"--duration", "-5"}, "--duration"},
+      {{"--duration", "1e999"}, "--duration"},
+      {{"--log-rate", "3"}, "--log-rate"},    // 1/(3 * 0.005) = 66.7 steps per row
+      {{"--log-rate", "400"}, "--log-rate"},  // faster than the steps
+      {{"--log-rate", "-10"}, "--log-rate"},
+      {{"--duration", "5.05"}, "--duration"},  // not a whole number of 0.1 s rows
+      {{"--duration", "1.0001"}, "--duration"},
+  };
+  for (const auto& [args, culprit] : cases) {
+    std::vector<std::string> full = {"--robot", "RT", "--path", "circle"};
+    full.insert(full.end(), args.begin(), args.end());
+    const Process process = terrain(full);
+    EXPECT_EQ(process.status, cli::kInvalidInput) << args.back() << ": " << process.err;
+    EXPECT_NE(process.err.find(culprit), std::string::npos) << process.err;
+    EXPECT_EQ(std::count(process.err.begin(), process.err.end(), '\n'), 1) << process.err;
+    expectNoOutputFiles();
+  }
+}
+
+TEST_F(SphereSimTest, RadiusBreakingSinglePointContactIsInvalidInput) {
+  // Eq 59's valleys have curvature a w^2 = 0.8 1/m, so a 2 m sphere touches them at two points.
+  const fs::path config = dir_ / "share";
+  fs::create_directories(config / "config");
+  fs::create_directories(config / "urdf");
+  fs::copy_file(fs::path(SPHERICAL_ROBOTS_SOURCE_DIR) / "config" / "terrain.yaml",
+                config / "config" / "terrain.yaml");
+  std::ofstream(config / "urdf" / "terrain_robot.urdf")
+      << "<robot name='big'><link name='base_link'><collision><geometry><sphere radius='2.0'/>"
+         "</geometry></collision></link></robot>\n";
+  const Process process = run({"terrain", "--robot", "3R", "--path", "circle", "--config",
+                               config.string(), "--out", out_.string()});
+  EXPECT_EQ(process.status, cli::kInvalidInput) << process.err;
+  EXPECT_NE(process.err.find("single-point contact"), std::string::npos) << process.err;
+  EXPECT_FALSE(fs::exists(out_));
+}
+
+TEST_F(SphereSimTest, UnreadableConfigOrOutputIsInvalidInput) {
+  const Process no_config = run({"terrain", "--robot", "3R", "--path", "circle", "--config",
+                                 (dir_ / "nowhere").string(), "--out", out_.string()});
+  EXPECT_EQ(no_config.status, cli::kInvalidInput);
+  EXPECT_NE(no_config.err.find("nowhere"), std::string::npos) << no_config.err;
+  EXPECT_FALSE(fs::exists(out_));
+
+  const fs::path unwritable = dir_ / "missing_dir" / "run.csv";
+  const Process no_dir =
+      run({"terrain", "--robot", "3R", "--path", "circle", "--duration", "1", "--config",
+           SPHERICAL_ROBOTS_SOURCE_DIR, "--out", unwritable.string()});
+  EXPECT_EQ(no_dir.status, cli::kInvalidInput);
+  EXPECT_NE(no_dir.err.find("missing_dir"), std::string::npos) << no_dir.err;
+}
+
+// --- help --------------------------------------------------------------------------------------
+
+TEST_F(SphereSimTest, HelpExplainsEveryOptionAndColumn) {
+  const Process help = run({"terrain", "--help"});
+  ASSERT_EQ(help.status, 0) << help.err;
+  for (const char* option :
+       {"--robot", "--path", "--model", "--duration", "--dt", "--log-rate", "--config", "--out"}) {
+    EXPECT_NE(help.out.find(option), std::string::npos) << option;
+  }
+  for (const char* default_text :
+       {"(default 200)", "(default 0.005)", "(default 10)", "(default paper)"}) {
+    EXPECT_NE(help.out.find(default_text), std::string::npos) << default_text;
+  }
+  // Every column the tool writes is explained.
+  ASSERT_EQ(terrain({"--robot", "3R", "--path", "circle", "--duration", "0"}).status, 0);
+  for (const std::string& column : readCsv(out_).header) {
+    EXPECT_TRUE(mentionsWord(help.out, column)) << column;
+  }
+  const Process top = run({"--help"});
+  EXPECT_EQ(top.status, 0);
+  EXPECT_NE(top.out.find("terrain"), std::string::npos);
+}
+
+// --- the CSV -----------------------------------------------------------------------------------
+
+/// Checks what every row must satisfy whatever the robot or path: the contact point and the
+/// desired point lie on the surface, e_norm is their distance, and the centre is R along the
+/// surface normal from the contact point.
+void expectRowGeometry(const Csv& csv) {
+  for (std::size_t i = 0; i < csv.rows.size(); ++i) {
+    SCOPED_TRACE("row " + std::to_string(i));
+    const double x0 = csv.at(i, "x0"), y0 = csv.at(i, "y0"), z0 = csv.at(i, "z0");
+    const double xd = csv.at(i, "xd"), yd = csv.at(i, "yd"), zd = csv.at(i, "zd");
+    EXPECT_NEAR(z0, surfaceHeight(x0, y0), kTight);
+    EXPECT_NEAR(zd, surfaceHeight(xd, yd), kTight);
+    EXPECT_NEAR(csv.at(i, "e_norm"), std::hypot(xd - x0, yd - y0, zd - z0), kTight);
+    // n = (-f_x, -f_y, 1) / |.| with f_x = -a w sin(w x) (eq 10).
+    const double fx = -kAmplitude * kFrequency * std::sin(kFrequency * x0);
+    const double fy = -kAmplitude * kFrequency * std::sin(kFrequency * y0);
+    const double s = kRadius / std::sqrt(1.0 + fx * fx + fy * fy);
+    EXPECT_NEAR(csv.at(i, "cx"), x0 - s * fx, kTight);
+    EXPECT_NEAR(csv.at(i, "cy"), y0 - s * fy, kTight);
+    EXPECT_NEAR(csv.at(i, "cz"), z0 + s, kTight);
+    EXPECT_GT(csv.at(i, "zeta"), -M_PI - kTight);
+    EXPECT_LE(csv.at(i, "zeta"), M_PI + kTight);
+  }
+}
+
+/// Rows at 0, period, 2 period, ... through duration inclusive.
+void expectRowTimes(const Csv& csv, double period, double duration) {
+  const auto rows = static_cast<std::size_t>(std::lround(duration / period)) + 1;
+  ASSERT_EQ(csv.rows.size(), rows);
+  for (std::size_t i = 0; i < rows; ++i) {
+    EXPECT_NEAR(csv.at(i, "t"), static_cast<double>(i) * period, 1e-9 * std::max(1.0, duration))
+        << "row " << i;
+  }
+}
+
+TEST_F(SphereSimTest, CircleRunMatchesClosedForms) {
+  // --duration after the other options, in the --name=value form.
+  const Process process = terrain({"--robot", "3R", "--path", "circle", "--duration=20"});
+  ASSERT_EQ(process.status, 0) << process.err;
+  const Csv csv = readCsv(out_);
+  for (const std::string& column : kRequiredColumns) csv.column(column);
+  expectRowTimes(csv, 0.1, 20.0);
+  expectRowGeometry(csv);
+  for (std::size_t i = 0; i < csv.rows.size(); ++i) {
+    const double t = csv.at(i, "t");
+    EXPECT_NEAR(csv.at(i, "xd"), kCircleRadius * std::cos(kCircleRate * t), kTight) << "t=" << t;
+    EXPECT_NEAR(csv.at(i, "yd"), kCircleRadius * std::sin(kCircleRate * t), kTight) << "t=" << t;
+    EXPECT_EQ(csv.at(i, "phi"), 0.0);  // only RS tilts
+  }
+  // The start: the origin, heading 0, target at (2, 0) straight ahead.
+  EXPECT_EQ(csv.at(0, "x0"), 0.0);
+  EXPECT_EQ(csv.at(0, "psi"), 0.0);
+  EXPECT_EQ(csv.at(0, "zeta"), 0.0);
+  // One summary line, naming the run, that found the 3R converged within 20 s.
+  EXPECT_EQ(std::count(process.out.begin(), process.out.end(), '\n'), 1) << process.out;
+  for (const char* word : {"3R", "circle", "paper"}) {
+    EXPECT_NE(process.out.find(word), std::string::npos) << process.out;
+  }
+  EXPECT_EQ(process.out.find("never"), std::string::npos) << process.out;
+  EXPECT_LT(csv.rows.back().at(csv.column("e_norm")), 0.1);
+}
+
+class SphereSimRobotTest : public SphereSimTest,
+                           public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(SphereSimRobotTest, DiamondRunRespectsTheRobotsConstraints) {
+  const std::string robot = GetParam();
+  const Process process = terrain({"--robot", robot, "--path", "diamond", "--duration", "5", "--dt",
+                                   "0.01", "--log-rate", "4", "--model", "rolling"});
+  ASSERT_EQ(process.status, 0) << process.err;
+  const Csv csv = readCsv(out_);
+  expectRowTimes(csv, 0.25, 5.0);
+  expectRowGeometry(csv);
+  for (std::size_t i = 0; i < csv.rows.size(); ++i) {
+    const double t = csv.at(i, "t");
+    // First edge, (d, 0) -> (0, d), at constant XY speed.
+    const double along = kDiamondSpeed * t / std::sqrt(2.0);
+    EXPECT_NEAR(csv.at(i, "xd"), kDiamondHalf - along, kTight) << "t=" << t;
+    EXPECT_NEAR(csv.at(i, "yd"), along, kTight) << "t=" << t;
+    // Unactuated rates are zero (docs/conventions.md, table of types).
+    if (robot == "2R") {
+      EXPECT_EQ(csv.at(i, "turn_rate"), 0.0);
+      EXPECT_EQ(csv.at(i, "psi"), 0.0);
+    }
+    if (robot == "RT") {
+      EXPECT_EQ(csv.at(i, "lateral_rate"), 0.0);
+    }
+    if (robot == "RS") {
+      EXPECT_LE(std::abs(csv.at(i, "phi")), kTiltLimit + kTight);
+      EXPECT_NEAR(csv.at(i, "turn_rate"), -csv.at(i, "roll_rate") * std::sin(csv.at(i, "phi")),
+                  kTight);  // eq 44
+    } else {
+      EXPECT_EQ(csv.at(i, "phi"), 0.0);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllTypes, SphereSimRobotTest, ::testing::Values("3R", "2R", "RT", "RS"));
+
+TEST_F(SphereSimTest, ValuesMayStartWithADash) {
+  // "-0" is a value, not an option: a zero-length run with its single row at t = 0.
+  ASSERT_EQ(terrain({"--robot", "RS", "--path", "circle", "--duration", "-0"}).status, 0);
+  EXPECT_EQ(readCsv(out_).rows.size(), 1u);
+  // A relative output file whose name starts with '-'.
+  const Process dashed = run({"terrain", "--robot", "2R", "--path", "circle", "--duration", "1",
+                              "--config", SPHERICAL_ROBOTS_SOURCE_DIR, "--out", "-run.csv"},
+                             dir_);
+  ASSERT_EQ(dashed.status, 0) << dashed.err;
+  EXPECT_EQ(readCsv(dir_ / "-run.csv").rows.size(), 11u);
+}
+
+TEST_F(SphereSimTest, FindsItsConfigWithoutTheConfigOption) {
+  const Process process = run(
+      {"terrain", "--robot", "RT", "--path", "circle", "--duration", "1", "--out", out_.string()});
+  ASSERT_EQ(process.status, 0) << process.err;
+  EXPECT_EQ(readCsv(out_).rows.size(), 11u);
+}
+
+// --- the shared option parser, in-process
+// ---------------------------------------------------------
+
+cli::Subcommand listCommand() {
+  cli::Subcommand command;
+  command.name = "demo";
+  command.options = {{"target", "X,Y,Z", "a point", "", true, {}},
+                     {"gain", "K", "a gain", "1.5", false, {}},
+                     {"open-loop", "", "a flag", "", false, {}}};
+  return command;
+}
+
+TEST(SphereSimCliTest, ListsAcceptNegativeNumbersAndCheckTheirLength) {
+  const cli::Subcommand command = listCommand();
+  const cli::ParsedOptions options = cli::parseOptions(command, {"--target", "-0.15,-0.25,7"});
+  EXPECT_EQ(options.numberList("target", 3), (std::vector<double>{-0.15, -0.25, 7.0}));
+  EXPECT_EQ(options.number("gain"), 1.5);  // the default
+  EXPECT_FALSE(options.given("gain"));
+  EXPECT_FALSE(options.flag("open-loop"));
+  EXPECT_THROW(options.numberList("target", 2), cli::UsageError);
+
+  EXPECT_THROW(cli::parseOptions(command, {"--target", "1,,2"}).numberList("target"),
+               cli::UsageError);
+  EXPECT_THROW(cli::parseOptions(command, {"--target", "1,nan,2"}).numberList("target"),
+               cli::InvalidInput);
+  EXPECT_EQ(cli::parseOptions(command, {"--target", "+2e-3"}).numberList("target"),
+            std::vector<double>{2e-3});
+}
+
+TEST(SphereSimCliTest, FlagsTakeNoValue) {
+  const cli::Subcommand command = listCommand();
+  EXPECT_TRUE(cli::parseOptions(command, {"--open-loop", "--target", "0"}).flag("open-loop"));
+  EXPECT_THROW(cli::parseOptions(command, {"--target", "0", "--open-loop=yes"}), cli::UsageError);
+  EXPECT_THROW(cli::parseOptions(command, {"--open-loop"}), cli::UsageError);  // --target missing
+}
+
+TEST(SphereSimCliTest, NumbersAreFiniteOrInvalid) {
+  const cli::Subcommand command = listCommand();
+  const auto gain = [&](const std::string& text) {
+    return cli::parseOptions(command, {"--target", "0", "--gain", text}).number("gain");
+  };
+  EXPECT_EQ(gain("-2.5"), -2.5);
+  EXPECT_EQ(gain("1e-3"), 1e-3);
+  for (const char* bad : {"nan", "-inf", "infinity", "1e400"}) {
+    EXPECT_THROW(gain(bad), cli::InvalidInput) << bad;
+  }
+  for (const char* malformed : {"", "1.5x", " 1", "0x10", "+-1", "1,2"}) {
+    EXPECT_THROW(gain(malformed), cli::UsageError) << malformed;
+  }
+}
+
+TEST(SphereSimCliTest, FormatsNumbersAtFullPrecision) {
+  for (const double value : {0.1, 1.0 / 3.0, -2.7182818284590451, 1e-300, 6.02214076e23}) {
+    EXPECT_EQ(std::strtod(cli::formatNumber(value).c_str(), nullptr), value);
+  }
+  EXPECT_EQ(cli::formatNumber(0.1), "0.1");
+  EXPECT_EQ(cli::formatNumber(-0.0), "0");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
