@@ -1,0 +1,144 @@
+#include "spherical_robots/ros/pure_pursuit_ros.hpp"
+
+#include <geometry_msgs/PointStamped.h>
+#include <nav_msgs/Path.h>
+#include <sensor_msgs/JointState.h>
+
+#include <stdexcept>
+
+#include "spherical_robots/TrackingError.h"
+#include "spherical_robots/config/terrain_config.hpp"
+#include "spherical_robots/ros/ros_parameter_source.hpp"
+
+namespace spherical_robots {
+namespace {
+
+const std::string kWorldFrame = "world";
+constexpr int kDesiredPathSamples = 400;
+
+}  // namespace
+
+PurePursuitRos::Mode PurePursuitRos::modeFromString(const std::string& name) {
+  if (name == "tracking") return Mode::Tracking;
+  if (name == "teleop") return Mode::Teleop;
+  throw std::invalid_argument("unknown mode (tracking | teleop)");
+}
+
+PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
+    : type_(parsedParam(pnh, "robot_type", "3R", terrain::robotTypeFromString)),
+      mode_(parsedParam(pnh, "mode", "tracking", modeFromString)),
+      radius_(radiusFromRobotDescription(nh)),
+      input_(nh.resolveName(mode_ == Mode::Tracking ? "terrain_state" : "cmd_vel"),
+             positiveParam(pnh, "input_timeout", 0.5)),
+      updater_(nh, pnh) {
+  const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
+  const auto gains = terrain_config.gains.find(type_);
+  controller_ = std::make_unique<terrain::PurePursuitController>(
+      type_, gains == terrain_config.gains.end() ? terrain::PursuitGains{} : gains->second, radius_);
+
+  command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", 10);
+  if (mode_ == Mode::Tracking) {
+    surface_ = config::makeSurface(terrain_config.surface);
+    path_ = parsedParam(pnh, "path", "circle", [&terrain_config](const std::string& name) {
+      return config::makePath(name, terrain_config);
+    });
+    input_sub_ = nh.subscribe("terrain_state", 10, &PurePursuitRos::onTerrainState, this);
+    error_pub_ = nh.advertise<spherical_robots::TrackingError>("tracking_error", 10);
+    target_pub_ = nh.advertise<geometry_msgs::PointStamped>("target", 10);
+    desired_path_pub_ = nh.advertise<nav_msgs::Path>("desired_path", 1, true);
+    desired_path_pub_.publish(conversions::sampledPath(*path_, *surface_, kDesiredPathSamples,
+                                                       kWorldFrame, ros::Time::now()));
+    ROS_INFO_STREAM("Tracking " << path_->describe() << " on " << surface_->describe() << " with a "
+                                << terrain::toString(type_) << " sphere, R = " << radius_ << " m");
+  } else {
+    input_sub_ = nh.subscribe("cmd_vel", 10, &PurePursuitRos::onCmdVel, this);
+    ROS_INFO_STREAM("Teleoperating a " << terrain::toString(type_) << " sphere, R = " << radius_
+                                       << " m, from " << input_.topic());
+  }
+
+  updater_.setHardwareID(terrain::toString(type_) + " sphere");
+  updater_.add("pure pursuit controller", this, &PurePursuitRos::diagnose);
+  timer_ = nh.createTimer(ros::Duration(1.0 / positiveParam(pnh, "rate", 50.0)),
+                          &PurePursuitRos::onTimer, this);
+}
+
+void PurePursuitRos::onTerrainState(const spherical_robots::TerrainState& msg) {
+  if (msg.robot_type != terrain::toString(type_)) {
+    input_.reject("state of a " + msg.robot_type + " robot, this controller drives a " +
+                  terrain::toString(type_));
+    return;
+  }
+  try {
+    geometry_ = conversions::contactGeometryFromMsg(msg);
+    input_.accept(ros::Time::now());
+  } catch (const std::invalid_argument& e) {
+    input_.reject(e.what());
+  }
+}
+
+void PurePursuitRos::onCmdVel(const geometry_msgs::Twist& msg) {
+  try {
+    teleop_ = conversions::ratesFromTwist(type_, msg, radius_);
+    input_.accept(ros::Time::now());
+  } catch (const std::invalid_argument& e) {
+    input_.reject(e.what());
+    return;
+  }
+  for (const std::string& field : teleop_.ignored) {
+    if (warned_ignored_.insert(field).second) {
+      ROS_WARN_STREAM("A " << terrain::toString(type_) << " sphere cannot follow cmd_vel " << field
+                           << "; ignoring it (warned once)");
+    }
+  }
+}
+
+void PurePursuitRos::onTimer(const ros::TimerEvent&) {
+  const ros::Time now = ros::Time::now();
+  if (start_.isZero()) start_ = now;
+  try {
+    command_ = mode_ == Mode::Tracking ? track(now) : teleop(now);
+  } catch (const std::exception& e) {
+    ++failures_;
+    command_ = terrain::DriveRates{};
+    ROS_ERROR_STREAM_THROTTLE(1.0, "Cannot compute a command (" << failures_
+                                                                << " failures so far), commanding zero: "
+                                                                << e.what());
+  }
+  command_pub_.publish(conversions::jointStateFromRates(type_, command_, now));
+  updater_.update();
+}
+
+terrain::DriveRates PurePursuitRos::track(const ros::Time& now) {
+  if (!geometry_ || !input_.fresh(now)) return {};
+  const terrain::DesiredPoint desired =
+      terrain::liftOntoSurface(*path_, *surface_, (now - start_).toSec());
+  error_ = terrain::trackingError(*geometry_, desired.position);
+  error_pub_.publish(conversions::toTrackingErrorMsg(error_, desired, kWorldFrame, now));
+  geometry_msgs::PointStamped target;
+  target.header.stamp = now;
+  target.header.frame_id = kWorldFrame;
+  target.point = conversions::toPoint(desired.position);
+  target_pub_.publish(target);
+  return controller_->command(error_, desired.velocity);
+}
+
+terrain::DriveRates PurePursuitRos::teleop(const ros::Time& now) const {
+  return input_.fresh(now) ? teleop_.rates : terrain::DriveRates{};
+}
+
+void PurePursuitRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  status.summary(diagnostic_msgs::DiagnosticStatus::OK,
+                 mode_ == Mode::Tracking ? "tracking " + path_->describe() : "teleop");
+  status.add("robot type", terrain::toString(type_));
+  if (mode_ == Mode::Tracking) {
+    status.add("|e_t| [m]", error_.norm);
+    status.add("zeta [rad]", error_.zeta);
+  }
+  status.add("roll rate set-point [rad/s]", command_.roll_rate);
+  status.add("lateral rate set-point [rad/s]", command_.lateral_rate);
+  status.add("turn rate set-point [rad/s]", command_.turn_rate);
+  status.add("command failures", failures_);
+  input_.report(status, ros::Time::now());
+}
+
+}  // namespace spherical_robots

@@ -1,0 +1,168 @@
+#include "spherical_robots/ros/terrain_plant_ros.hpp"
+
+#include <nav_msgs/Odometry.h>
+#include <visualization_msgs/Marker.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "spherical_robots/TerrainState.h"
+#include "spherical_robots/config/terrain_config.hpp"
+#include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/ros/ros_parameter_source.hpp"
+#include "spherical_robots/terrain/terrain_simulation.hpp"
+
+namespace spherical_robots {
+namespace {
+
+const std::string kWorldFrame = "world";
+constexpr std::size_t kMaxTrailPoints = 2000;
+
+/// Whether a periodic action last done at `last` is due again at `now` (also after a time jump back).
+bool due(const ros::Time& last, const ros::Time& now, double period) {
+  return last.isZero() || now < last || (now - last).toSec() >= period - 1e-9;
+}
+
+}  // namespace
+
+TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
+    : type_(parsedParam(pnh, "robot_type", "3R", terrain::robotTypeFromString)),
+      base_frame_(stringParam(pnh, "frame_prefix", "") + "base_link"),
+      heading_frame_(stringParam(pnh, "frame_prefix", "") + "heading"),
+      step_(positiveParam(pnh, "step", 0.01)),
+      duration_(numberParam(pnh, "duration", 0.0)),
+      publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
+      trail_period_(positiveParam(pnh, "trail_period", 0.5)),
+      actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.5)),
+      updater_(nh, pnh) {
+  const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
+  const double radius = radiusFromRobotDescription(nh);
+  const auto model = parsedParam(pnh, "contact_model", "paper", terrain::contactModelFromString);
+  surface_ = config::makeSurface(terrain_config.surface);
+  kinematics_ = std::make_unique<terrain::TerrainKinematics>(*surface_, type_, radius, model,
+                                                              terrain_config.tilt_limit);
+  state_.x = numberParam(pnh, "initial_x", 0.0);
+  state_.y = numberParam(pnh, "initial_y", 0.0);
+  state_.psi = numberParam(pnh, "initial_psi", 0.0);
+  orientation_ = Eigen::Quaterniond(kinematics_->geometry(state_).heading_frame);
+
+  actuator_sub_ = nh.subscribe("actuators/state", 10, &TerrainPlantRos::onActuatorState, this);
+  odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
+  state_pub_ = nh.advertise<spherical_robots::TerrainState>("terrain_state", 10);
+  trail_pub_ = nh.advertise<nav_msgs::Path>("trail", 1);
+  marker_pub_ = nh.advertise<visualization_msgs::Marker>("terrain_marker", 1, true);
+  marker_pub_.publish(conversions::surfaceMesh(*surface_, positiveParam(pnh, "marker_half_extent", 3.0),
+                                               positiveParam(pnh, "marker_resolution", 0.1),
+                                               kWorldFrame, ros::Time::now()));
+  trail_.header.frame_id = kWorldFrame;
+
+  updater_.setHardwareID(terrain::toString(type_) + " sphere R=" + std::to_string(radius) + " m");
+  updater_.add("terrain plant", this, &TerrainPlantRos::diagnose);
+
+  const bool publish_clock = boolParam(pnh, "publish_clock", false);
+  const double speedup = publish_clock ? numberParam(pnh, "speedup", 10.0) : 0.0;
+  ROS_INFO_STREAM(terrain::toString(type_) << " sphere, R = " << radius << " m, "
+                                           << terrain::toString(model) << " contact model, on "
+                                           << surface_->describe() << "; frames " << base_frame_
+                                           << ", " << heading_frame_);
+  clock_ = std::make_unique<SimClock>(nh, step_, speedup, [this](const ros::Time& now) { tick(now); });
+}
+
+void TerrainPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
+  try {
+    measured_ = conversions::ratesFromJointState(type_, msg);
+    actuator_input_.accept(ros::Time::now());
+  } catch (const std::invalid_argument& e) {
+    actuator_input_.reject(e.what());
+  }
+}
+
+void TerrainPlantRos::tick(const ros::Time& now) {
+  if (finished_) return;
+  const terrain::DriveRates rates =
+      actuator_input_.fresh(now) ? measured_ : terrain::DriveRates{};
+  if (start_.isZero()) {
+    start_ = now;
+  } else if (now > last_tick_) {
+    integrate((now - last_tick_).toSec(), rates);
+  } else {
+    ROS_WARN_STREAM_THROTTLE(1.0, "ROS time went from " << last_tick_ << " back to " << now
+                                                        << " s; holding the state");
+  }
+  last_tick_ = now;
+
+  if (due(last_publish_, now, publish_period_)) publishState(now, rates);
+  if (due(last_trail_, now, trail_period_)) extendTrail(now);
+  updater_.update();
+
+  if (duration_ > 0.0 && (now - start_).toSec() >= duration_ - 1e-9) {
+    ROS_INFO_STREAM("scenario complete: " << duration_ << " s simulated, contact point at ("
+                                          << state_.x << ", " << state_.y << ") m");
+    finished_ = true;
+    ros::shutdown();
+  }
+}
+
+void TerrainPlantRos::integrate(double elapsed, const terrain::DriveRates& rates) {
+  const int steps = std::max(1, static_cast<int>(std::ceil(elapsed / step_ - 1e-9)));
+  const double dt = elapsed / steps;
+  const Eigen::Vector3d centre_before = kinematics_->geometry(state_).centre;
+  try {
+    for (int i = 0; i < steps; ++i) {
+      const Eigen::Vector3d omega = kinematics_->shellAngularVelocity(state_, rates);
+      state_ = terrain::stepWithHeldRates(*kinematics_, state_, rates, dt);
+      orientation_ = terrain::advanceOrientation(orientation_, omega, dt);
+    }
+  } catch (const std::exception& e) {
+    ++integration_failures_;
+    ROS_ERROR_STREAM_THROTTLE(1.0, "Integration failed (" << integration_failures_
+                                                          << " so far), holding the last good state: "
+                                                          << e.what());
+  }
+  centre_velocity_ = (kinematics_->geometry(state_).centre - centre_before) / elapsed;
+}
+
+void TerrainPlantRos::publishState(const ros::Time& now, const terrain::DriveRates& rates) {
+  last_publish_ = now;
+  const terrain::ContactGeometry geometry = kinematics_->geometry(state_);
+  const Eigen::Quaterniond heading(geometry.heading_frame);
+  odom_pub_.publish(conversions::toOdometry(geometry.centre, orientation_, centre_velocity_,
+                                            kinematics_->shellAngularVelocity(state_, rates),
+                                            kWorldFrame, base_frame_, now));
+  tf_broadcaster_.sendTransform(
+      {conversions::toTransform(geometry.centre, orientation_, kWorldFrame, base_frame_, now),
+       conversions::toTransform(geometry.contact_point, heading, kWorldFrame, heading_frame_, now)});
+  state_pub_.publish(conversions::toTerrainStateMsg(type_, kinematics_->model(), state_, geometry,
+                                                    kinematics_->realisedRates(state_, rates), now));
+}
+
+void TerrainPlantRos::extendTrail(const ros::Time& now) {
+  last_trail_ = now;
+  const terrain::ContactGeometry geometry = kinematics_->geometry(state_);
+  trail_.header.stamp = now;
+  trail_.poses.push_back(conversions::toPoseStamped(
+      geometry.contact_point, Eigen::Quaterniond(geometry.heading_frame), kWorldFrame, now));
+  if (trail_.poses.size() > kMaxTrailPoints) trail_.poses.erase(trail_.poses.begin());
+  trail_pub_.publish(trail_);
+}
+
+void TerrainPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  const ros::Time now = ros::Time::now();
+  status.summary(diagnostic_msgs::DiagnosticStatus::OK, "rolling");
+  status.add("robot type", terrain::toString(type_));
+  status.add("contact model", terrain::toString(kinematics_->model()));
+  status.add("time since start [s]", (now - start_).toSec());
+  status.add("x [m]", state_.x);
+  status.add("y [m]", state_.y);
+  status.add("psi [rad]", state_.psi);
+  status.add("phi [rad]", state_.phi);
+  status.add("real-time factor", clock_->realTimeFactor());
+  status.add("integration failures", integration_failures_);
+  if (integration_failures_ > failures_at_last_report_) {
+    status.mergeSummary(diagnostic_msgs::DiagnosticStatus::ERROR, "integration failed");
+  }
+  failures_at_last_report_ = integration_failures_;
+  actuator_input_.report(status, now);
+}
+
+}  // namespace spherical_robots

@@ -1,0 +1,77 @@
+#pragma once
+// The pure-pursuit controller node (terrain paper eqs 53-58) and its teleoperation mode.
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <geometry_msgs/Twist.h>
+#include <ros/ros.h>
+
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "spherical_robots/TerrainState.h"
+#include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/terrain/pure_pursuit.hpp"
+#include "spherical_robots/terrain/reference_path.hpp"
+#include "spherical_robots/terrain/surface.hpp"
+
+namespace spherical_robots {
+
+/// Parameters (private, ~): robot_type (3R | 2R | RT | RS, "3R"); mode (tracking | teleop,
+/// "tracking"); path (circle | diamond, "circle"); rate [Hz] (50); input_timeout [s] (0.5): an
+/// older terrain_state or cmd_vel counts as absent and the command is zero.
+/// In the node handle's namespace: robot_description (URDF, for the radius) and terrain/...
+/// (config/terrain.yaml: surface, paths, gains).
+///
+/// tracking: subscribes terrain_state; every 1/rate s of ROS time it commands the
+/// PurePursuitController towards liftOntoSurface(path, surface, t), t = ROS time since its first
+/// tick, and publishes tracking_error, target and (latched, once) desired_path.
+/// teleop: subscribes cmd_vel (geometry_msgs/Twist), mapped by conversions::ratesFromTwist; what
+/// the robot type cannot follow is ignored with one warning per field.
+/// Both publish actuators/command (sensor_msgs/JointState set-points) and /diagnostics.
+class PurePursuitRos {
+ public:
+  /// @throw std::invalid_argument on a bad parameter, URDF or terrain configuration.
+  PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh);
+
+ private:
+  enum class Mode { Tracking, Teleop };
+  static Mode modeFromString(const std::string& name);
+
+  void onTerrainState(const spherical_robots::TerrainState& msg);
+  void onCmdVel(const geometry_msgs::Twist& msg);
+  void onTimer(const ros::TimerEvent& event);
+  /// The set-points in tracking mode; zero without a fresh terrain_state.
+  terrain::DriveRates track(const ros::Time& now);
+  /// The set-points in teleop mode; zero without a fresh cmd_vel.
+  terrain::DriveRates teleop(const ros::Time& now) const;
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  terrain::RobotType type_;
+  Mode mode_;
+  double radius_;
+  std::unique_ptr<terrain::Surface> surface_;
+  std::unique_ptr<terrain::ReferencePath> path_;
+  std::unique_ptr<terrain::PurePursuitController> controller_;
+
+  std::optional<terrain::ContactGeometry> geometry_;  ///< from the last good terrain_state
+  conversions::TeleopRates teleop_;                   ///< from the last good cmd_vel
+  std::set<std::string> warned_ignored_;
+  terrain::DriveRates command_;
+  terrain::TrackingError error_;
+  unsigned long failures_ = 0;
+  ros::Time start_;
+
+  InputMonitor input_;  ///< terrain_state (tracking) or cmd_vel (teleop)
+  ros::Subscriber input_sub_;
+  ros::Publisher command_pub_;
+  ros::Publisher error_pub_;
+  ros::Publisher target_pub_;
+  ros::Publisher desired_path_pub_;
+  diagnostic_updater::Updater updater_;
+  ros::Timer timer_;
+};
+
+}  // namespace spherical_robots

@@ -1,0 +1,88 @@
+#pragma once
+// The terrain plant node: a sphere rolling over z = f(x, y), integrated from the measured
+// actuator rates (terrain::stepWithHeldRates) and published as odometry, tf, state and trail.
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <nav_msgs/Path.h>
+#include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include <Eigen/Geometry>
+#include <memory>
+#include <string>
+
+#include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/sim_clock.hpp"
+#include "spherical_robots/terrain/surface.hpp"
+#include "spherical_robots/terrain/terrain_kinematics.hpp"
+
+namespace spherical_robots {
+
+/// Parameters (private, ~):
+/// * robot_type (3R | 2R | RT | RS, "3R"), contact_model (paper | rolling, "paper");
+/// * frame_prefix (""): prepended to every frame but `world`;
+/// * step [s] (0.01): integration step; publish_rate [Hz] (50): odom, tf and terrain_state;
+/// * publish_clock (false), speedup (10): own /clock at this speed-up (see SimClock); otherwise
+///   step on ROS time;
+/// * duration [s] (0 = forever): at this much ROS time after the first step, log "scenario
+///   complete" and shut the node down;
+/// * state_timeout [s] (0.5): older measured rates count as zero;
+/// * initial_x, initial_y [m], initial_psi [rad] (0): the initial contact point and heading;
+/// * trail_period [s] (0.5): spacing of the driven trail's points;
+/// * marker_half_extent [m] (3), marker_resolution [m] (0.1): the terrain mesh [-e, e]^2.
+/// In the node handle's namespace: robot_description (URDF; the radius is base_link's collision
+/// sphere) and terrain/... (config/terrain.yaml).
+/// Subscribes actuators/state (sensor_msgs/JointState, measured rates). Publishes odom, tf
+/// world -> <prefix>base_link (centre, shell orientation) and world -> <prefix>heading (contact
+/// point, R_L), terrain_state, trail, terrain_marker (latched) and /diagnostics.
+class TerrainPlantRos {
+ public:
+  /// @throw std::invalid_argument on a bad parameter, URDF or terrain configuration.
+  TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh);
+
+ private:
+  void onActuatorState(const sensor_msgs::JointState& msg);
+  void tick(const ros::Time& now);
+  /// Advances state_ and orientation_ by elapsed [s] in steps no longer than step_.
+  void integrate(double elapsed, const terrain::DriveRates& rates);
+  void publishState(const ros::Time& now, const terrain::DriveRates& rates);
+  void extendTrail(const ros::Time& now);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  terrain::RobotType type_;
+  std::string base_frame_;
+  std::string heading_frame_;
+  double step_;
+  double duration_;
+  double publish_period_;
+  double trail_period_;
+
+  std::unique_ptr<terrain::Surface> surface_;
+  std::unique_ptr<terrain::TerrainKinematics> kinematics_;
+  terrain::TerrainState state_;
+  Eigen::Quaterniond orientation_;  ///< shell (base_link) orientation, world <- body
+  Eigen::Vector3d centre_velocity_ = Eigen::Vector3d::Zero();  ///< over the last tick [m/s]
+  terrain::DriveRates measured_;
+  unsigned long integration_failures_ = 0;
+  unsigned long failures_at_last_report_ = 0;
+
+  ros::Time start_;
+  ros::Time last_tick_;
+  ros::Time last_publish_;
+  ros::Time last_trail_;
+  bool finished_ = false;
+
+  InputMonitor actuator_input_;
+  ros::Subscriber actuator_sub_;
+  ros::Publisher odom_pub_;
+  ros::Publisher state_pub_;
+  ros::Publisher trail_pub_;
+  ros::Publisher marker_pub_;
+  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  diagnostic_updater::Updater updater_;
+  nav_msgs::Path trail_;
+  std::unique_ptr<SimClock> clock_;  ///< last: it ticks only once everything else exists
+};
+
+}  // namespace spherical_robots
