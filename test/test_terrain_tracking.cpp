@@ -1,0 +1,227 @@
+// The paper's section 6 claim, reproduced: on the terrain of eq 59 (a = 0.2 m, w = 2 rad/m) a
+// sphere of R = 0.2 m of each type tracks the circle (eq 60, corrected) and the diamond, and "the
+// tracking error converges to the vicinity of the origin in approximately 30 seconds". Scenario
+// and gains come from the shipped config/terrain.yaml; the robot starts at the origin (the peak of
+// eq 59) with psi = phi = 0, 2 m from the paths' start point (2, 0); closed-loop RK4, dt = 5 ms,
+// 200 s (more than one lap of either path).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "spherical_robots/config/terrain_config.hpp"
+#include "spherical_robots/config/yaml_parameter_source.hpp"
+#include "spherical_robots/terrain/pure_pursuit.hpp"
+#include "spherical_robots/terrain/reference_path.hpp"
+#include "spherical_robots/terrain/terrain_kinematics.hpp"
+#include "spherical_robots/terrain/terrain_simulation.hpp"
+
+#ifndef SPHERICAL_ROBOTS_SOURCE_DIR
+#error "SPHERICAL_ROBOTS_SOURCE_DIR must be defined (CMakeLists.txt)"
+#endif
+
+namespace {
+
+using namespace spherical_robots::terrain;  // NOLINT: test file
+namespace config = spherical_robots::config;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kRadius = 0.2;  // paper section 6
+constexpr double kDt = 0.005;
+constexpr double kDuration = 200.0;
+constexpr double kThreshold = 0.1;  // "converged": |e_t| < 0.1 m
+constexpr double kSettle = 40.0;
+constexpr double kPaperConvergence = 30.0;  // "approximately 30 seconds"
+
+config::TerrainConfig shippedConfig() {
+  const config::YamlParameterSource source(SPHERICAL_ROBOTS_SOURCE_DIR "/config/terrain.yaml");
+  return config::loadTerrainConfig(source);
+}
+
+// ------------------------------------------------------------------------------------------
+// The reference paths themselves (the claim is only as good as the target it tracks).
+
+TEST(ReferencePaths, CircleIsEq60WithItsSineRestored) {
+  const CirclePath circle(2.0, 0.05);
+  for (double t : {0.0, 10.0, 31.4, 77.0, 125.0}) {
+    const Eigen::Vector2d p = circle.position(t);
+    EXPECT_NEAR(p.x(), 2.0 * std::cos(0.05 * t), 1e-15);
+    EXPECT_NEAR(p.y(), 2.0 * std::sin(0.05 * t), 1e-15);
+    const Eigen::Vector2d v_fd = (circle.position(t + 1e-5) - circle.position(t - 1e-5)) / 2e-5;
+    EXPECT_LE((circle.velocity(t) - v_fd).norm(), 1e-9);
+  }
+  EXPECT_NEAR(circle.period(), 2 * kPi / 0.05, 1e-12);
+}
+
+TEST(ReferencePaths, DiamondVisitsItsVerticesCounterClockwiseAtConstantSpeed) {
+  const double d = 2.0, v = 0.1, edge_time = std::sqrt(2.0) * d / v;
+  const DiamondPath diamond(d, v);
+  const std::vector<Eigen::Vector2d> vertices = {{d, 0}, {0, d}, {-d, 0}, {0, -d}, {d, 0}};
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_LE((diamond.position(k * edge_time) - vertices[k]).norm(), 1e-12) << "vertex " << k;
+  }
+  EXPECT_NEAR(diamond.period(), 4 * edge_time, 1e-12);
+  for (double t : {1.0, 20.0, 30.0, 50.0, 90.0, 111.0}) {
+    const Eigen::Vector2d v_fd = (diamond.position(t + 1e-4) - diamond.position(t - 1e-4)) / 2e-4;
+    EXPECT_LE((diamond.velocity(t) - v_fd).norm(), 1e-9) << "t " << t;
+    EXPECT_NEAR(diamond.velocity(t).norm(), v, 1e-15);
+    // On the diamond |x| + |y| = d.
+    EXPECT_NEAR(std::abs(diamond.position(t).x()) + std::abs(diamond.position(t).y()), d, 1e-12);
+  }
+}
+
+TEST(ReferencePaths, LiftingPutsTheTargetOnTheSurfaceWithItsTangentVelocity) {
+  const CosineSurface surface(0.2, 2.0);
+  const CirclePath circle(2.0, 0.05);
+  for (double t : {0.0, 13.0, 40.0}) {
+    const DesiredPoint p = liftOntoSurface(circle, surface, t);
+    const Eigen::Vector2d xy = circle.position(t);
+    EXPECT_NEAR(p.position.z(), 0.2 * (std::cos(2 * xy.x()) + std::cos(2 * xy.y()) - 2), 1e-15);
+    // z_d' = d/dt f(x_d(t), y_d(t)), by central differences in time.
+    const double dz = (liftOntoSurface(circle, surface, t + 1e-5).position.z() -
+                       liftOntoSurface(circle, surface, t - 1e-5).position.z()) /
+                      2e-5;
+    EXPECT_NEAR(p.velocity.z(), dz, 1e-9);
+    EXPECT_LE((p.velocity.head<2>() - circle.velocity(t)).norm(), 1e-15);
+  }
+}
+
+// ------------------------------------------------------------------------------------------
+// TrackingSummary on a tiny synthetic series, figures computed by hand.
+
+TEST(TrackingSummary, ReportsFirstConvergenceAndMeanAndMaxAfterSettling) {
+  TrackingSummary s(0.1, 40.0);
+  // t:      0    10   20    30    40    50   60
+  // |e|:  0.5  0.2  0.09  0.15  0.05  0.2  0.02
+  const double t[] = {0, 10, 20, 30, 40, 50, 60};
+  const double e[] = {0.5, 0.2, 0.09, 0.15, 0.05, 0.2, 0.02};
+  for (int i = 0; i < 7; ++i) s.add(t[i], e[i]);
+  EXPECT_EQ(s.timeToConverge(), 20.0);  // first sample below 0.1; the later rise does not reset it
+  EXPECT_NEAR(s.meanAfterSettling(), (0.05 + 0.2 + 0.02) / 3.0, 1e-15);  // t >= 40: 40, 50, 60
+  EXPECT_EQ(s.maxAfterSettling(), 0.2);
+  EXPECT_EQ(s.threshold(), 0.1);
+  EXPECT_EQ(s.settleTime(), 40.0);
+}
+
+TEST(TrackingSummary, IsNaNWhenNeverConvergedOrNeverSettled) {
+  TrackingSummary s(0.1, 40.0);
+  s.add(0.0, 1.0);
+  s.add(39.9, 0.5);
+  EXPECT_TRUE(std::isnan(s.timeToConverge()));
+  EXPECT_TRUE(std::isnan(s.meanAfterSettling()));
+  EXPECT_TRUE(std::isnan(s.maxAfterSettling()));
+  s.add(45.0, 0.3);
+  EXPECT_TRUE(std::isnan(s.timeToConverge()));
+  EXPECT_NEAR(s.meanAfterSettling(), 0.3, 1e-15);
+  EXPECT_EQ(s.maxAfterSettling(), 0.3);
+}
+
+// ------------------------------------------------------------------------------------------
+// The closed-loop runs: 4 robots x 2 paths x 2 contact models.
+
+struct TrackingCase {
+  RobotType type;
+  const char* path;
+  ContactModel model;
+};
+
+void PrintTo(const TrackingCase& c, std::ostream* os) {
+  *os << toString(c.type) << " on the " << c.path << ", " << toString(c.model) << " contact model";
+}
+
+// Bounds on |e_t| after 40 s (the mean must be below the 0.1 m threshold in both cases).
+//  * Circle (smooth, constant speed 0.1 m/s): tracking is a steady state; the max may be no more
+//    than 3x the convergence threshold, 0.3 m.
+//  * Diamond: at each vertex the target's velocity turns by 90 degrees at once, so every type lags
+//    until it has redirected; the transient may not exceed k_e = 0.5 m, the error scale of the
+//    pursuit laws (eqs 55-58): beyond it g = |e| / (k_e + |e|) > 1/2 and the robot is re-acquiring
+//    a far target rather than tracking the path. That is also what the slowest turner cannot
+//    avoid kinematically: an RS at its pi/3 tilt limit turns at alpha_dot sin(pi/3) ~ 0.43 rad/s
+//    (alpha_dot ~ v / R = 0.5 rad/s), so 90 degrees take >= 3.6 s, in which the target moves
+//    0.36 m, plus its turning radius R cot(pi/3) = 0.115 m: ~0.48 m < 0.5 m.
+double maxBoundAfterSettling(const std::string& path, double k_e) {
+  return path == std::string("circle") ? 3.0 * kThreshold : k_e;
+}
+
+struct RunResult {
+  double time_to_converge, mean_after, max_after, max_surface_gap, k_e;
+};
+
+RunResult run(const TrackingCase& c) {
+  const config::TerrainConfig cfg = shippedConfig();
+  const auto surface = config::makeSurface(cfg.surface);
+  const auto path = config::makePath(c.path, cfg);
+  const TerrainKinematics kin(*surface, c.type, kRadius, c.model, cfg.tilt_limit);
+  const PurePursuitController ctrl(c.type, cfg.gains.at(c.type), kRadius);
+  TerrainSimulation sim(kin, ctrl, *path, TerrainState{});
+  TrackingSummary summary(kThreshold, kSettle);
+  RunResult r{};
+  const int steps = static_cast<int>(std::lround(kDuration / kDt));
+  for (int i = 0; i <= steps; ++i) {
+    const TerrainSample s = sim.sample();
+    summary.add(s.t, s.error.norm);
+    const double gap = std::abs(s.geometry.contact_point.z() - surface->height(s.state.x, s.state.y));
+    r.max_surface_gap = std::max(r.max_surface_gap, gap);
+    if (i < steps) sim.step(kDt);
+  }
+  r.time_to_converge = summary.timeToConverge();
+  r.mean_after = summary.meanAfterSettling();
+  r.max_after = summary.maxAfterSettling();
+  r.k_e = cfg.gains.at(c.type).k_e;
+  return r;
+}
+
+class PaperTrackingClaim : public ::testing::TestWithParam<TrackingCase> {};
+
+TEST_P(PaperTrackingClaim, ConvergesWithin30sAndStaysOnThePathAfter40s) {
+  const auto c = GetParam();
+  const RunResult r = run(c);
+  // Printed for the record (docs/errata.md T3/T9 quote these figures).
+  std::cout << std::fixed << std::setprecision(3) << "[ result   ] " << toString(c.type) << " "
+            << c.path << " " << toString(c.model) << ": converged at " << r.time_to_converge
+            << " s, after 40 s mean " << r.mean_after << " m, max " << r.max_after << " m\n";
+  RecordProperty("time_to_converge", std::to_string(r.time_to_converge));
+  RecordProperty("mean_after_40s", std::to_string(r.mean_after));
+  RecordProperty("max_after_40s", std::to_string(r.max_after));
+
+  ASSERT_FALSE(std::isnan(r.time_to_converge)) << "|e_t| never went below " << kThreshold << " m";
+  EXPECT_LT(r.time_to_converge, kPaperConvergence);
+  EXPECT_LT(r.mean_after, kThreshold);
+  EXPECT_LT(r.max_after, maxBoundAfterSettling(c.path, r.k_e));
+  // z0 is f(x0, y0) by construction: no drift over 40000 RK4 steps.
+  EXPECT_LT(r.max_surface_gap, 1e-12);
+}
+
+std::vector<TrackingCase> allCases() {
+  std::vector<TrackingCase> v;
+  for (auto model : {ContactModel::Paper, ContactModel::Rolling}) {
+    for (const char* path : {"circle", "diamond"}) {
+      for (auto type : {RobotType::ThreeAxisRolling, RobotType::TwoAxisRolling,
+                        RobotType::RollingAndTurning, RobotType::RollingAndSteering}) {
+        v.push_back({type, path, model});
+      }
+    }
+  }
+  return v;
+}
+
+INSTANTIATE_TEST_SUITE_P(RobotsPathsModels, PaperTrackingClaim, ::testing::ValuesIn(allCases()),
+                         [](const auto& info) {
+                           const std::string t = toString(info.param.type);
+                           return (t == "3R" ? std::string("ThreeR") : t == "2R" ? "TwoR" : t) +
+                                  "_" + info.param.path + "_" + toString(info.param.model);
+                         });
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
