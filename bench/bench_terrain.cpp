@@ -1,0 +1,68 @@
+// The terrain batch run that `sphere_sim terrain` performs: 200 s at dt = 5 ms (40,000 RK4 steps,
+// 160,000 closed-loop evaluations) for each robot type.
+//  * BM_SphereSimTerrain: the whole command in-process, through runSphereSim exactly as the
+//    executable runs it (config and URDF parsing, 2,001 CSV rows written to a temporary file).
+//  * BM_TerrainArithmetic: the same run without the CSV, to separate arithmetic from I/O.
+// scripts/run_benchmarks.sh also times the executable as a process.
+
+#include <benchmark/benchmark.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "sphere_sim_cli.hpp"
+#include "spherical_robots/config/robot_description.hpp"
+#include "terrain_command.hpp"
+
+namespace {
+
+using spherical_robots::sphere_sim::kSuccess;
+using spherical_robots::sphere_sim::runSphereSim;
+using spherical_robots::sphere_sim::terrainCommand;
+using spherical_robots::sphere_sim::TerrainRun;
+using spherical_robots::sphere_sim::TerrainRunSettings;
+namespace terrain = spherical_robots::terrain;
+
+const char* const kRobots[] = {"3R", "2R", "RT", "RS"};
+
+void BM_SphereSimTerrain(benchmark::State& state) {
+  const std::string robot = kRobots[state.range(0)];
+  state.SetLabel(robot + " circle 200 s");
+  const std::string out = (std::filesystem::temp_directory_path() /
+                           ("bench_terrain_" + std::to_string(::getpid()) + ".csv"))
+                              .string();
+  const std::vector<spherical_robots::sphere_sim::Subcommand> commands = {terrainCommand()};
+  const std::vector<std::string> args = {"terrain", "--robot", robot, "--path",
+                                         "circle",  "--out",   out};
+  std::ostringstream summary;
+  std::ostringstream errors;
+  for (auto _ : state) {
+    if (runSphereSim(commands, args, summary, errors) != kSuccess) {
+      state.SkipWithError(errors.str().c_str());
+      break;
+    }
+    summary.str("");
+  }
+  std::remove(out.c_str());
+}
+BENCHMARK(BM_SphereSimTerrain)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
+
+void BM_TerrainArithmetic(benchmark::State& state) {
+  TerrainRunSettings settings;
+  settings.robot = terrain::robotTypeFromString(kRobots[state.range(0)]);
+  settings.config_dir = spherical_robots::config::packageShareDirectory();
+  state.SetLabel(terrain::toString(settings.robot) + " circle 200 s, no CSV");
+  const TerrainRun run(settings);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(run.simulate(nullptr).meanAfterSettling());
+  }
+}
+BENCHMARK(BM_TerrainArithmetic)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
