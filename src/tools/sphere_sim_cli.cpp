@@ -92,7 +92,9 @@ subcommands:
     out << "  " << command.name << "  " << command.summary << '\n';
   }
   out << R"(
-Run 'sphere_sim SUBCOMMAND --help' for its options and output.
+Run 'sphere_sim SUBCOMMAND --help' for its options and output. An option's value is the next
+argument even if it begins with '-' (--target -0.15,-0.25,7); --name=VALUE works too. Lists
+are comma-separated. nan and inf parse but are rejected as invalid input.
 Exit status: 0 success; 2 usage error (unknown option, malformed value, missing option);
 3 well-posed problem without a solution (output written); 4 invalid or degenerate input
 (one-line error on stderr, no output file).
