@@ -1,0 +1,275 @@
+// The terrain scenario's parameters: config/terrain.yaml through YamlParameterSource and
+// loadTerrainConfig, the factories for surfaces and paths, and the sphere radius read from a URDF.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <unistd.h>
+
+#include "spherical_robots/config/robot_description.hpp"
+#include "spherical_robots/config/terrain_config.hpp"
+#include "spherical_robots/config/yaml_parameter_source.hpp"
+
+#ifndef SPHERICAL_ROBOTS_SOURCE_DIR
+#error "SPHERICAL_ROBOTS_SOURCE_DIR must be defined (CMakeLists.txt)"
+#endif
+
+namespace {
+
+using spherical_robots::config::loadTerrainConfig;
+using spherical_robots::config::makePath;
+using spherical_robots::config::makeSurface;
+using spherical_robots::config::SurfaceSpec;
+using spherical_robots::config::sphereRadiusFromUrdf;
+using spherical_robots::config::TerrainConfig;
+using spherical_robots::config::YamlParameterSource;
+using spherical_robots::terrain::PursuitGains;
+using spherical_robots::terrain::RobotType;
+
+constexpr double kPi = 3.14159265358979323846;
+const std::string kShipped = SPHERICAL_ROBOTS_SOURCE_DIR "/config/terrain.yaml";
+
+// A YAML file in the test's temp directory, removed when the test ends.
+class TempYaml {
+ public:
+  explicit TempYaml(const std::string& text) {
+    static int counter = 0;
+    path_ = ::testing::TempDir() + "terrain_config_" + std::to_string(::getpid()) + "_" +
+            std::to_string(counter++) + ".yaml";
+    std::ofstream(path_) << text;
+  }
+  ~TempYaml() { std::remove(path_.c_str()); }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+TerrainConfig loadText(const std::string& text) {
+  const TempYaml file(text);
+  return loadTerrainConfig(YamlParameterSource(file.path()));
+}
+
+// Expects std::invalid_argument whose message contains every one of `needles`.
+void expectInvalidNaming(const std::function<void()>& f, std::initializer_list<std::string> needles) {
+  try {
+    f();
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    for (const auto& n : needles) EXPECT_NE(what.find(n), std::string::npos) << "'" << n << "' not in: " << what;
+  }
+}
+
+// The documented defaults: config/terrain.yaml ("the defaults"), k_e = 0.5 m for all.
+void expectDocumentedGains(const TerrainConfig& c) {
+  const PursuitGains& g3r = c.gains.at(RobotType::ThreeAxisRolling);
+  EXPECT_EQ(g3r.k_theta, 2.0);
+  EXPECT_EQ(g3r.k_phi1, 2.0);
+  EXPECT_EQ(g3r.k_phi2, 0.3);
+  EXPECT_EQ(g3r.k_psi, 1.0);
+  const PursuitGains& g2r = c.gains.at(RobotType::TwoAxisRolling);
+  EXPECT_EQ(g2r.k_theta1, 3.0);
+  EXPECT_EQ(g2r.k_theta2, 0.3);
+  EXPECT_EQ(g2r.k_phi1, 3.0);
+  EXPECT_EQ(g2r.k_phi2, 0.3);
+  const PursuitGains& grt = c.gains.at(RobotType::RollingAndTurning);
+  EXPECT_EQ(grt.k_theta, 2.0);
+  EXPECT_EQ(grt.k_psi, 1.0);
+  const PursuitGains& grs = c.gains.at(RobotType::RollingAndSteering);
+  EXPECT_EQ(grs.k_alpha, 0.5);
+  EXPECT_EQ(grs.k_phi, 2.0);
+  for (const auto& [type, g] : c.gains) EXPECT_EQ(g.k_e, 0.5);
+}
+
+void expectDocumentedScenario(const TerrainConfig& c) {
+  EXPECT_EQ(c.surface.type, "cosine");  // eq 59, a = 0.2 m, w = 2
+  EXPECT_EQ(c.surface.amplitude, 0.2);
+  EXPECT_EQ(c.surface.frequency, 2.0);
+  EXPECT_EQ(c.circle_radius, 2.0);  // eq 60: 2 cos(5t/100)
+  EXPECT_EQ(c.circle_angular_rate, 0.05);
+  EXPECT_EQ(c.diamond_half_diagonal, 2.0);  // diagonals of 4 m, the circle's diameter
+  EXPECT_EQ(c.diamond_speed, 0.1);          // the circle's speed, 2 m x 0.05 rad/s
+  EXPECT_NEAR(c.tilt_limit, kPi / 3, 1e-15);  // section 6: "a limitation of pi/3"
+}
+
+// ------------------------------------------------------------------------------------------
+
+TEST(TerrainConfig, ShippedFileGivesThePapersScenarioAndTheDocumentedGains) {
+  const TerrainConfig c = loadTerrainConfig(YamlParameterSource(kShipped));
+  expectDocumentedScenario(c);
+  EXPECT_EQ(c.gains.size(), 4u);
+  expectDocumentedGains(c);
+}
+
+TEST(TerrainConfig, MissingKeysKeepTheDocumentedDefaults) {
+  // Every gain key is missing here; each type must still get its documented default (2R's k_phi1
+  // is 3.0 in config/terrain.yaml, not the 3R value 2.0 that PursuitGains{} carries).
+  for (const char* text : {"{}\n", "terrain:\n  surface:\n    amplitude: 0.3\n"}) {
+    SCOPED_TRACE(text);
+    TerrainConfig c = loadText(text);
+    EXPECT_EQ(c.surface.amplitude, text[0] == '{' ? 0.2 : 0.3);
+    c.surface.amplitude = 0.2;
+    expectDocumentedScenario(c);
+    EXPECT_EQ(c.gains.size(), 4u);
+    expectDocumentedGains(c);
+  }
+}
+
+TEST(TerrainConfig, OneOverriddenGainLeavesTheOthersAndSharedKeAppliesToAllTypes) {
+  const TerrainConfig c = loadText("terrain:\n  gains:\n    k_e: 0.7\n    3R: {k_psi: 1.5}\n");
+  EXPECT_EQ(c.gains.at(RobotType::ThreeAxisRolling).k_psi, 1.5);
+  EXPECT_EQ(c.gains.at(RobotType::ThreeAxisRolling).k_theta, 2.0);
+  EXPECT_EQ(c.gains.at(RobotType::RollingAndTurning).k_psi, 1.0);  // RT's own k_psi untouched
+  for (const auto& [type, g] : c.gains) EXPECT_EQ(g.k_e, 0.7);
+}
+
+struct BadValue {
+  const char* label;
+  const char* yaml;
+  const char* key;  // what the message must name
+};
+
+class TerrainConfigBadValue : public ::testing::TestWithParam<BadValue> {};
+
+TEST_P(TerrainConfigBadValue, ThrowsNamingTheKeyAndTheFile) {
+  const auto c = GetParam();
+  const TempYaml file(c.yaml);
+  expectInvalidNaming([&] { loadTerrainConfig(YamlParameterSource(file.path())); },
+                      {c.key, file.path()});
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Malformed, TerrainConfigBadValue,
+    ::testing::Values(
+        BadValue{"StringGain", "terrain:\n  gains:\n    3R: {k_theta: fast}\n", "k_theta"},
+        BadValue{"NanGain", "terrain:\n  gains:\n    RT: {k_psi: .nan}\n", "k_psi"},
+        BadValue{"InfGain", "terrain:\n  gains:\n    RS: {k_alpha: .inf}\n", "k_alpha"},
+        BadValue{"NegativeGain", "terrain:\n  gains:\n    2R: {k_phi2: -0.3}\n", "k_phi2"},
+        BadValue{"NegativeRsTiltGain", "terrain:\n  gains:\n    RS: {k_phi: -2}\n", "k_phi"},
+        BadValue{"ZeroKe", "terrain:\n  gains:\n    k_e: 0\n", "k_e"},
+        BadValue{"StringAmplitude", "terrain:\n  surface:\n    amplitude: high\n", "amplitude"},
+        BadValue{"NanFrequency", "terrain:\n  surface:\n    frequency: .nan\n", "frequency"},
+        BadValue{"StringCircleRadius", "terrain:\n  paths:\n    circle: {radius: big}\n", "radius"},
+        BadValue{"NanTiltLimit", "terrain:\n  rs_tilt_limit: .nan\n", "rs_tilt_limit"},
+        BadValue{"ListWhereNumber", "terrain:\n  paths:\n    diamond: {speed: [1, 2]}\n", "speed"}),
+    [](const auto& info) { return std::string(info.param.label); });
+
+TEST(YamlParameterSource, RejectsAMissingOrUnparsableFileNamingIt) {
+  const std::string missing = ::testing::TempDir() + "no_such_terrain_config.yaml";
+  expectInvalidNaming([&] { YamlParameterSource{missing}; }, {missing});
+  const TempYaml broken("terrain: [unclosed\n  surface: {\n");
+  expectInvalidNaming([&] { YamlParameterSource{broken.path()}; }, {broken.path()});
+}
+
+TEST(YamlParameterSource, ReadsNestedKeysAndReportsAbsentOnes) {
+  const TempYaml file("a:\n  b:\n    c: 1.5\n    s: hello\n");
+  const YamlParameterSource src(file.path());
+  EXPECT_EQ(src.number("a/b/c").value(), 1.5);
+  EXPECT_EQ(src.text("a/b/s").value(), "hello");
+  EXPECT_FALSE(src.number("a/b/missing").has_value());
+  EXPECT_FALSE(src.number("x/y").has_value());
+  EXPECT_THROW(src.number("a/b/s"), std::invalid_argument);
+  EXPECT_EQ(src.origin(), file.path());
+}
+
+// ------------------------------------------------------------------------------------------
+// Factories.
+
+TEST(MakeSurface, BuildsTheNamedSurfaceAndRejectsUnknownNames) {
+  SurfaceSpec spec;  // cosine, a = 0.2, w = 2
+  const auto cosine = makeSurface(spec);
+  EXPECT_NEAR(cosine->height(0.3, -1.1), 0.2 * (std::cos(0.6) + std::cos(-2.2) - 2.0), 1e-15);
+
+  spec.type = "tilted_plane";
+  spec.slope_x = 0.1;
+  spec.slope_y = -0.2;
+  spec.offset = 0.5;
+  const auto tilted = makeSurface(spec);
+  EXPECT_NEAR(tilted->height(2.0, 3.0), 0.5 + 0.2 - 0.6, 1e-15);
+
+  spec.type = "plane";
+  spec.slope_x = spec.slope_y = 0.0;
+  EXPECT_NEAR(makeSurface(spec)->height(7.0, -3.0), 0.5, 1e-15);
+
+  for (const char* bad : {"bumpy", "Cosine"}) {
+    spec.type = bad;
+    expectInvalidNaming([&] { makeSurface(spec); }, {bad});
+  }
+  spec.type = "";
+  EXPECT_THROW(makeSurface(spec), std::invalid_argument);
+  SurfaceSpec zero_frequency;
+  zero_frequency.frequency = 0.0;
+  EXPECT_THROW(makeSurface(zero_frequency), std::invalid_argument);
+}
+
+TEST(MakePath, BuildsTheNamedPathFromTheConfigAndRejectsUnknownNames) {
+  TerrainConfig c;
+  c.circle_radius = 1.5;
+  c.circle_angular_rate = 0.1;
+  c.diamond_half_diagonal = 3.0;
+  c.diamond_speed = 0.2;
+  const auto circle = makePath("circle", c);
+  EXPECT_LE((circle->position(5.0) - 1.5 * Eigen::Vector2d(std::cos(0.5), std::sin(0.5))).norm(), 1e-15);
+  const auto diamond = makePath("diamond", c);
+  EXPECT_LE((diamond->position(0.0) - Eigen::Vector2d(3.0, 0.0)).norm(), 1e-15);
+  EXPECT_NEAR(diamond->velocity(1.0).norm(), 0.2, 1e-15);
+  for (const char* bad : {"square", "Circle", ""}) {
+    EXPECT_THROW(makePath(bad, c), std::invalid_argument) << bad;
+  }
+  c.circle_radius = -1.0;
+  EXPECT_THROW(makePath("circle", c), std::invalid_argument);
+}
+
+// ------------------------------------------------------------------------------------------
+// sphereRadiusFromUrdf.
+
+std::string urdfWith(const std::string& link_body, const std::string& link = "base_link") {
+  return "<?xml version=\"1.0\"?>\n<robot name=\"r\">\n  <link name=\"" + link + "\">\n" + link_body +
+         "  </link>\n</robot>\n";
+}
+
+std::string geometry(const std::string& element, const std::string& shape) {
+  return "    <" + element + "><geometry>" + shape + "</geometry></" + element + ">\n";
+}
+
+TEST(SphereRadiusFromUrdf, ReadsTheCollisionSphere) {
+  EXPECT_EQ(sphereRadiusFromUrdf(urdfWith(geometry("collision", "<sphere radius=\"0.2\"/>"))), 0.2);
+  EXPECT_EQ(sphereRadiusFromUrdf(urdfWith(geometry("collision", "<sphere radius=\"0.35\"/>"), "shell"),
+                                 "shell"),
+            0.35);
+}
+
+TEST(SphereRadiusFromUrdf, PrefersCollisionOverVisualAndFallsBackToVisual) {
+  const std::string both = geometry("visual", "<sphere radius=\"0.25\"/>") +
+                           geometry("collision", "<sphere radius=\"0.2\"/>");
+  EXPECT_EQ(sphereRadiusFromUrdf(urdfWith(both)), 0.2);
+  EXPECT_EQ(sphereRadiusFromUrdf(urdfWith(geometry("visual", "<sphere radius=\"0.25\"/>"))), 0.25);
+}
+
+TEST(SphereRadiusFromUrdf, RejectsWhatIsNotAPositiveSphere) {
+  const std::string sphere = geometry("collision", "<sphere radius=\"0.2\"/>");
+  EXPECT_THROW(sphereRadiusFromUrdf(urdfWith(geometry("collision", "<box size=\"0.2 0.2 0.2\"/>"))),
+               std::invalid_argument);
+  EXPECT_THROW(sphereRadiusFromUrdf(urdfWith(sphere), "missing_link"), std::invalid_argument);
+  EXPECT_THROW(sphereRadiusFromUrdf(urdfWith(geometry("collision", "<sphere radius=\"-0.2\"/>"))),
+               std::invalid_argument);
+  EXPECT_THROW(sphereRadiusFromUrdf(urdfWith(geometry("collision", "<sphere radius=\"0\"/>"))),
+               std::invalid_argument);
+  EXPECT_THROW(sphereRadiusFromUrdf(urdfWith("")), std::invalid_argument);  // no geometry at all
+  EXPECT_THROW(sphereRadiusFromUrdf("<robot name=\"r\"><link name=\"base_link\">"), std::invalid_argument);
+  EXPECT_THROW(sphereRadiusFromUrdf("not xml at all"), std::invalid_argument);
+  EXPECT_THROW(sphereRadiusFromUrdf(""), std::invalid_argument);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
