@@ -294,3 +294,8 @@ TEST(SimulatedActuators, BadConstructorArgumentsThrowWithContext) {
   }
   EXPECT_TRUE(contains(constructionError(names, {{-3.0, 20.0}, {10.0, 20.0}}, 0.5), "got -3"));
 }
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
