@@ -1,0 +1,147 @@
+#include "spherical_robots/ros/hardware_interface_sim_ros.hpp"
+
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "spherical_robots/ros/ros_parameter_source.hpp"
+
+namespace spherical_robots {
+
+namespace {
+
+std::string describe(const XmlRpc::XmlRpcValue& value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+std::invalid_argument badParameter(const ros::NodeHandle& pnh, const std::string& name,
+                                   const std::string& problem) {
+  return std::invalid_argument("parameter " + pnh.resolveName(name) + " " + problem);
+}
+
+std::vector<std::string> readActuatorNames(const ros::NodeHandle& pnh) {
+  XmlRpc::XmlRpcValue value;
+  if (!pnh.getParam("actuator_names", value))
+    throw badParameter(pnh, "actuator_names",
+                       "is required: the list of actuator names, e.g. [theta, phi, psi]");
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeArray || value.size() == 0)
+    throw badParameter(pnh, "actuator_names",
+                       "must be a non-empty list of strings, got " + describe(value));
+  std::vector<std::string> names;
+  for (int i = 0; i < value.size(); ++i) {
+    if (value[i].getType() != XmlRpc::XmlRpcValue::TypeString)
+      throw badParameter(pnh, "actuator_names",
+                         "must be a non-empty list of strings, got " + describe(value));
+    names.push_back(static_cast<std::string>(value[i]));
+  }
+  return names;
+}
+
+hardware::SimulatedActuators makeActuators(const ros::NodeHandle& pnh) {
+  const std::vector<std::string> names = readActuatorNames(pnh);
+  const hardware::ActuatorLimits limits{positiveParam(pnh, "max_velocity", 20.0),
+                                        positiveParam(pnh, "max_acceleration", 50.0)};
+  const double command_timeout = positiveParam(pnh, "command_timeout", 0.5);
+  try {
+    return hardware::SimulatedActuators(
+        names, std::vector<hardware::ActuatorLimits>(names.size(), limits), command_timeout);
+  } catch (const std::invalid_argument& e) {
+    // The numbers are checked above, so what is left is the names (empty or duplicate).
+    throw badParameter(pnh, "actuator_names", std::string("is invalid: ") + e.what());
+  }
+}
+
+}  // namespace
+
+HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHandle pnh)
+    : actuators_(makeActuators(pnh)), updater_(nh, pnh) {
+  const double rate = positiveParam(pnh, "rate", 100.0);
+  state_msg_.name = actuators_.names();
+
+  updater_.setHardwareID("simulated");
+  updater_.add("actuators", this, &HardwareInterfaceSimRos::diagnose);
+
+  state_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/state", 10);
+  command_sub_ =
+      nh.subscribe("actuators/command", 10, &HardwareInterfaceSimRos::commandCallback, this);
+  e_stop_sub_ = nh.subscribe("e_stop", 10, &HardwareInterfaceSimRos::eStopCallback, this);
+  // A ros::Timer (not a WallTimer) so the actuators follow simulated time under /use_sim_time.
+  timer_ =
+      nh.createTimer(ros::Duration(1.0 / rate), &HardwareInterfaceSimRos::timerCallback, this);
+
+  const auto& limits = actuators_.limits().front();
+  ROS_INFO("hardware_interface_sim: %zu actuators, |velocity| <= %g rad/s, |accel| <= %g rad/s^2, "
+           "command timeout %g s, publishing %s at %g Hz",
+           actuators_.names().size(), limits.max_velocity, limits.max_acceleration,
+           actuators_.commandTimeout(), state_pub_.getTopic().c_str(), rate);
+}
+
+void HardwareInterfaceSimRos::commandCallback(const sensor_msgs::JointState::ConstPtr& msg) {
+  // The watchdog counts from arrival, not from header.stamp: many publishers leave it zero.
+  const std::string reason = actuators_.command(msg->name, msg->velocity, ros::Time::now().toSec());
+  if (reason.empty()) {
+    ++accepted_commands_;
+    reported_timeout_ = false;
+    return;
+  }
+  ++rejected_commands_;
+  last_rejection_ = reason;
+  ROS_WARN_THROTTLE(1.0, "hardware_interface_sim: command on %s rejected (%s); keeping the last "
+                    "good set-points (%lu rejected so far)",
+                    command_sub_.getTopic().c_str(), reason.c_str(), rejected_commands_);
+}
+
+void HardwareInterfaceSimRos::eStopCallback(const std_msgs::Bool::ConstPtr& msg) {
+  if (msg->data == actuators_.eStopped()) return;
+  const ros::Time now = ros::Time::now();
+  actuators_.setEStop(msg->data, now.toSec());
+  if (msg->data)
+    ROS_ERROR("hardware_interface_sim: e-stop engaged: actuators stopped, commands rejected");
+  else
+    ROS_WARN("hardware_interface_sim: e-stop released: actuators at rest until the next command");
+  // Say so at once rather than at the next tick: this is the safety path.
+  publishState(now);
+  updater_.force_update();
+}
+
+void HardwareInterfaceSimRos::timerCallback(const ros::TimerEvent&) {
+  const ros::Time now = ros::Time::now();
+  actuators_.update(now.toSec());
+  if (actuators_.timedOut() && !reported_timeout_) {
+    ROS_WARN("hardware_interface_sim: no command for %g s: actuators brought to rest",
+             actuators_.commandTimeout());
+    reported_timeout_ = true;
+  }
+  publishState(now);
+  updater_.update();
+}
+
+void HardwareInterfaceSimRos::publishState(const ros::Time& stamp) {
+  state_msg_.header.stamp = stamp;
+  state_msg_.position = actuators_.positions();
+  state_msg_.velocity = actuators_.velocities();
+  state_pub_.publish(state_msg_);
+}
+
+void HardwareInterfaceSimRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  using diagnostic_msgs::DiagnosticStatus;
+  if (actuators_.eStopped())
+    status.summary(DiagnosticStatus::ERROR, "e-stop engaged");
+  else if (actuators_.timedOut())
+    status.summary(DiagnosticStatus::WARN, "command timeout: actuators brought to rest");
+  else if (!actuators_.hasCommand())
+    status.summary(DiagnosticStatus::OK, "waiting for the first command");
+  else
+    status.summary(DiagnosticStatus::OK, "following commands");
+  status.add("accepted commands", accepted_commands_);
+  status.add("rejected commands", rejected_commands_);
+  status.add("last rejection", last_rejection_.empty() ? std::string("none") : last_rejection_);
+  status.add("command timeout [s]", actuators_.commandTimeout());
+  for (std::size_t i = 0; i < actuators_.names().size(); ++i)
+    status.addf(actuators_.names()[i] + " set-point, velocity [rad/s]", "%.6g, %.6g",
+                actuators_.setpoints()[i], actuators_.velocities()[i]);
+}
+
+}  // namespace spherical_robots

@@ -1,0 +1,46 @@
+#pragma once
+// ROS wrapper of hardware::SimulatedActuators: the simulated side of the hardware seam described
+// in docs/hardware_interface.md. Parameters in, set-points in, measured states and diagnostics
+// out; every rule about limits, the watchdog and the e-stop lives in the core class.
+
+#include <string>
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
+#include <std_msgs/Bool.h>
+
+#include "spherical_robots/hardware/simulated_actuators.hpp"
+
+namespace spherical_robots {
+
+/// Callbacks are meant for one spinner thread (ros::spin): they share the actuators unguarded.
+class HardwareInterfaceSimRos {
+ public:
+  /// @param nh the stack's namespace: topics actuators/command, actuators/state, e_stop.
+  /// @param pnh the node's private namespace: parameters actuator_names, max_velocity [rad/s],
+  ///        max_acceleration [rad/s^2], command_timeout [s], rate [Hz].
+  /// @throw std::invalid_argument on a missing or malformed parameter, naming it and its value.
+  HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHandle pnh);
+
+ private:
+  void commandCallback(const sensor_msgs::JointState::ConstPtr& msg);
+  void eStopCallback(const std_msgs::Bool::ConstPtr& msg);
+  void timerCallback(const ros::TimerEvent& event);
+  void publishState(const ros::Time& stamp);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  hardware::SimulatedActuators actuators_;
+  sensor_msgs::JointState state_msg_;
+  ros::Publisher state_pub_;
+  ros::Subscriber command_sub_;
+  ros::Subscriber e_stop_sub_;
+  ros::Timer timer_;
+  diagnostic_updater::Updater updater_;
+  unsigned long accepted_commands_ = 0;
+  unsigned long rejected_commands_ = 0;
+  std::string last_rejection_;
+  bool reported_timeout_ = false;
+};
+
+}  // namespace spherical_robots
