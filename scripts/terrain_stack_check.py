@@ -1,0 +1,290 @@
+#!/usr/bin/env python3
+"""rostest of launch/terrain_stack.launch: the whole terrain stack, headless, in simulated time.
+
+Runs in the stack's namespace (test/terrain_stack.test, test/terrain_teleop.test). Private params:
+~mode (tracking | teleop, as launched) and ~frame_prefix. Times are simulated (the plant owns
+/clock), bounded by generous wall-clock deadlines; tolerances are generous where the machine's load
+matters (tracking error) and tight where the maths is exact (the contact point lies on the surface,
+which the plant never integrates off).
+"""
+import math
+import threading
+import time
+import unittest
+
+import rosnode
+import rospy
+import rostest
+import tf2_ros
+from diagnostic_msgs.msg import DiagnosticArray
+from geometry_msgs.msg import Twist, Vector3
+from nav_msgs.msg import Odometry, Path
+from sensor_msgs.msg import JointState
+
+from spherical_robots.msg import TerrainState, TrackingError
+
+PKG = 'spherical_robots'
+NAME = 'terrain_stack_check'
+WALL_DEADLINE = 120.0          # [s] wall, for anything the stack should do in time
+SETTLE = (40.0, 60.0)          # [s] simulated window in which tracking has converged
+PLANT_STATUS = 'terrain_kinematics: terrain plant'
+CONTROLLER_STATUS = 'pure_pursuit_controller: pure pursuit controller'
+NODES = ['terrain_kinematics', 'pure_pursuit_controller', 'hardware_interface',
+         'robot_state_publisher']
+
+
+class Recorder:
+    """Keeps every message of a topic, with the simulated time it arrived."""
+
+    def __init__(self, topic, msg_type):
+        self.lock = threading.Lock()
+        self.messages = []
+        self.subscriber = rospy.Subscriber(topic, msg_type, self.callback, queue_size=1000)
+
+    def callback(self, msg):
+        with self.lock:
+            self.messages.append((rospy.Time.now().to_sec(), msg))
+
+    def count(self):
+        with self.lock:
+            return len(self.messages)
+
+    def last(self):
+        with self.lock:
+            return self.messages[-1][1] if self.messages else None
+
+    def since(self, index):
+        with self.lock:
+            return [msg for _, msg in self.messages[index:]]
+
+
+def wait_until(condition, what, timeout=WALL_DEADLINE):
+    deadline = time.time() + timeout
+    while not condition():
+        if time.time() > deadline or rospy.is_shutdown():
+            raise AssertionError('timed out after %.0f s (wall) waiting for %s' % (timeout, what))
+        time.sleep(0.05)
+
+
+def sim_sleep(seconds):
+    """Sleeps `seconds` of simulated time, bounded by the wall deadline."""
+    end = rospy.Time.now().to_sec() + seconds
+    wait_until(lambda: rospy.Time.now().to_sec() >= end, '%.1f s of simulated time' % seconds)
+
+
+def publish_when_connected(publisher, msg):
+    wait_until(lambda: publisher.get_num_connections() > 0,
+               'a subscriber on ' + publisher.resolved_name)
+    publisher.publish(msg)
+
+
+def publish_until(publisher, messages, condition, what):
+    """Publishes the messages every 0.2 s (wall) until condition holds. The test node subscribes to
+    some of the topics it publishes bad messages on, so get_num_connections() cannot tell whether
+    the node under test is connected yet: repeat until it reports the messages."""
+    deadline = time.time() + WALL_DEADLINE
+    while not condition():
+        if time.time() > deadline or rospy.is_shutdown():
+            raise AssertionError('timed out after %.0f s (wall) waiting for %s' % (WALL_DEADLINE, what))
+        for msg in messages:
+            publisher.publish(msg)
+        time.sleep(0.2)
+
+
+class StackFixture(unittest.TestCase):
+    """Subscriptions and helpers shared by both modes."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.prefix = rospy.get_param('~frame_prefix', rospy.get_namespace().strip('/') + '/')
+        cls.amplitude = float(rospy.get_param('terrain/surface/amplitude'))
+        cls.frequency = float(rospy.get_param('terrain/surface/frequency'))
+        cls.radius = 0.2  # urdf/terrain_robot.urdf
+        cls.odom = Recorder('odom', Odometry)
+        cls.states = Recorder('terrain_state', TerrainState)
+        cls.actuators = Recorder('actuators/state', JointState)
+        cls.diagnostics = Recorder('/diagnostics', DiagnosticArray)
+        cls.tf_buffer = tf2_ros.Buffer()
+        cls.tf_listener = tf2_ros.TransformListener(cls.tf_buffer)
+        wait_until(lambda: cls.odom.count() > 0, 'the first odom message')
+
+    def surface_height(self, x, y):
+        """Paper eq 59 with config/terrain.yaml's a and w."""
+        return self.amplitude * (math.cos(self.frequency * x) + math.cos(self.frequency * y) - 2.0)
+
+    def diagnostic_value(self, status_suffix, key):
+        """The latest value of `key` in the /diagnostics status whose name ends with the suffix."""
+        for array in reversed(self.diagnostics.since(0)):
+            for status in array.status:
+                if status.name.endswith(status_suffix):
+                    for pair in status.values:
+                        if pair.key == key:
+                            return pair.value
+        return None
+
+    def assert_nodes_alive(self):
+        for node in NODES:
+            name = rospy.resolve_name(node)
+            self.assertTrue(rosnode.rosnode_ping(name, max_count=1), name + ' does not answer')
+
+    def assert_still_publishing(self, recorders):
+        counts = [recorder.count() for recorder in recorders]
+        sim_sleep(2.0)
+        for recorder, before in zip(recorders, counts):
+            self.assertGreater(recorder.count(), before + 5,
+                               recorder.subscriber.resolved_name + ' stopped publishing')
+
+    def rejected_count(self, status_suffix, topic):
+        """How many messages on topic the node whose status ends with status_suffix rejected."""
+        return int(self.diagnostic_value(status_suffix, rospy.resolve_name(topic) + ' rejected') or 0)
+
+    def check_rejected_actuator_state(self):
+        """A NaN and an incomplete actuators/state are ignored, counted, and kill nothing."""
+        publisher = rospy.Publisher('actuators/state', JointState, queue_size=10)
+        bad_nan = JointState(name=['theta', 'phi', 'psi'], velocity=[float('nan'), 0.0, 0.0])
+        bad_missing = JointState(name=['theta'], velocity=[1.0])
+        publish_until(publisher, [bad_nan, bad_missing],
+                      lambda: self.rejected_count(PLANT_STATUS, 'actuators/state') >= 2,
+                      'the plant to report 2 rejected actuators/state messages on /diagnostics')
+        self.assert_still_publishing([self.odom, self.states, self.actuators])
+        self.assert_nodes_alive()
+
+
+class TrackingCheck(StackFixture):
+    """mode:=tracking: the 3R robot follows the radius-2 circle on the eq 59 terrain."""
+
+    @classmethod
+    def setUpClass(cls):
+        super().setUpClass()
+        cls.errors = Recorder('tracking_error', TrackingError)
+
+    def test_01_odometry(self):
+        odom = self.odom.last()
+        self.assertEqual(odom.header.frame_id, 'world')
+        self.assertEqual(odom.child_frame_id, self.prefix + 'base_link')
+        p = odom.pose.pose.position
+        self.assertTrue(all(math.isfinite(v) for v in (p.x, p.y, p.z)))
+
+    def test_02_tf(self):
+        for child in ('base_link', 'heading', 'marker_link'):  # marker_link: robot_state_publisher
+            transform = self.tf_buffer.lookup_transform('world', self.prefix + child, rospy.Time(0),
+                                                        rospy.Duration(10.0))
+            t = transform.transform.translation
+            self.assertTrue(all(math.isfinite(v) for v in (t.x, t.y, t.z)), child)
+        # The heading frame sits at the contact point, base_link R above it along the normal.
+        base = self.tf_buffer.lookup_transform('world', self.prefix + 'base_link', rospy.Time(0))
+        heading = self.tf_buffer.lookup_transform('world', self.prefix + 'heading', rospy.Time(0))
+        b, h = base.transform.translation, heading.transform.translation
+        # Transforms are published together but may be looked up at different times: allow the
+        # distance travelled in a few steps.
+        self.assertAlmostEqual(math.dist((b.x, b.y, b.z), (h.x, h.y, h.z)), self.radius, delta=0.05)
+
+    def test_03_desired_path_latched(self):
+        path = rospy.wait_for_message('desired_path', Path, timeout=30.0)
+        self.assertEqual(path.header.frame_id, 'world')
+        self.assertGreaterEqual(len(path.poses), 100)
+        for pose in path.poses:
+            q = pose.pose.position
+            self.assertAlmostEqual(math.hypot(q.x, q.y), 2.0, delta=1e-6)
+            self.assertAlmostEqual(q.z, self.surface_height(q.x, q.y), delta=1e-6)
+        first, last = path.poses[0].pose.position, path.poses[-1].pose.position
+        self.assertAlmostEqual(math.dist((first.x, first.y), (last.x, last.y)), 0.0, delta=1e-6)
+        angles = [math.atan2(p.pose.position.y, p.pose.position.x) % (2 * math.pi) for p in path.poses]
+        self.assertGreater(max(angles) - min(angles), 1.9 * math.pi)  # one whole period
+
+    def test_04_contact_point_on_surface(self):
+        wait_until(lambda: self.states.count() >= 50, '50 terrain_state messages')
+        for msg in self.states.since(0)[-50:]:
+            c, o, n = msg.contact_point, msg.centre, msg.normal
+            self.assertAlmostEqual(c.z, self.surface_height(c.x, c.y), delta=1e-6)
+            self.assertAlmostEqual(math.sqrt(n.x ** 2 + n.y ** 2 + n.z ** 2), 1.0, delta=1e-9)
+            for axis in ('x', 'y', 'z'):
+                self.assertAlmostEqual(getattr(o, axis), getattr(c, axis) + self.radius * getattr(n, axis),
+                                       delta=1e-9)
+
+    def test_05_tracking_converges(self):
+        wait_until(lambda: self.errors.count() > 0, 'the first tracking_error message')
+        start = self.errors.since(0)[0].header.stamp.to_sec()
+        wait_until(lambda: self.errors.last().header.stamp.to_sec() - start > SETTLE[1],
+                   '%.0f s of simulated tracking' % SETTLE[1])
+        window = [m.error_norm for m in self.errors.since(0)
+                  if SETTLE[0] <= m.header.stamp.to_sec() - start <= SETTLE[1]]
+        self.assertGreater(len(window), 200, 'too few tracking_error messages in the window')
+        mean, worst = sum(window) / len(window), max(window)
+        rospy.loginfo('|e_t| over simulated t in [%g, %g] s: mean %.4f m, max %.4f m, %d samples',
+                      SETTLE[0], SETTLE[1], mean, worst, len(window))
+        self.assertLess(mean, 0.1)
+        self.assertLess(worst, 0.2)
+
+    def test_06_bad_messages_kill_nothing(self):
+        self.check_rejected_actuator_state()
+        # The controller ignores terrain_state messages it cannot use, and so does the hardware
+        # interface with a non-finite set-point.
+        state_pub = rospy.Publisher('terrain_state', TerrainState, queue_size=10)
+        bad_state = self.states.last()
+        bad_state.normal.x = float('nan')
+        publish_until(state_pub, [bad_state],
+                      lambda: self.rejected_count(CONTROLLER_STATUS, 'terrain_state') >= 1,
+                      'the controller to report a rejected terrain_state on /diagnostics')
+        command_pub = rospy.Publisher('actuators/command', JointState, queue_size=10)
+        publish_when_connected(command_pub, JointState(name=['theta', 'phi', 'psi'],
+                                                       velocity=[float('nan'), 0.0, 0.0]))
+        self.assert_still_publishing([self.odom, self.errors, self.actuators])
+        self.assert_nodes_alive()
+        recent = [m.error_norm for m in self.errors.since(-50)]
+        self.assertLess(max(recent), 0.2, 'tracking degraded after the bad messages')
+
+
+class TeleopCheck(StackFixture):
+    """mode:=teleop: cmd_vel drives the 3R robot; stale or bad cmd_vel stops or is ignored."""
+
+    def drive(self, twist, seconds):
+        """Publishes twist every 5 ms (wall) for `seconds` of simulated time: at 10x that is every
+        0.05 s simulated, well inside the 0.5 s cmd_vel timeout."""
+        publisher = rospy.Publisher('cmd_vel', Twist, queue_size=10)
+        publish_when_connected(publisher, twist)
+        end = rospy.Time.now().to_sec() + seconds
+        deadline = time.time() + WALL_DEADLINE
+        while rospy.Time.now().to_sec() < end and time.time() < deadline:
+            publisher.publish(twist)
+            time.sleep(0.005)
+
+    def contact_point(self):
+        c = self.states.last().contact_point
+        return c.x, c.y
+
+    def test_01_drive_and_stop(self):
+        wait_until(lambda: self.states.count() > 0, 'the first terrain_state message')
+        # The robot starts on the peak at the origin, heading along +x (psi = 0).
+        x0, y0 = self.contact_point()
+        self.drive(Twist(linear=Vector3(x=0.2)), 4.0)
+        x1, y1 = self.contact_point()
+        # 0.2 m/s for 4 s, less the actuators' ramp: about 0.8 m forward, along +x by symmetry.
+        self.assertGreater(x1 - x0, 0.5, 'linear.x did not drive forward')
+        self.assertLess(abs(y1 - y0), 0.05)
+        # linear.y > 0 moves left: lateral rate -v_y / R, centre velocity -R phi_dot l.
+        self.drive(Twist(linear=Vector3(y=0.2)), 3.0)
+        x2, y2 = self.contact_point()
+        self.assertGreater(y2 - y1, 0.3, 'linear.y did not drive left')
+        # cmd_vel goes stale after 0.5 s: set-points become zero and the robot stops.
+        sim_sleep(2.0)
+        x3, y3 = self.contact_point()
+        sim_sleep(2.0)
+        x4, y4 = self.contact_point()
+        rospy.loginfo('teleop: forward %.3f m (y drift %.4f m), left %.3f m, drift when stale %.2e m',
+                      x1 - x0, y1 - y0, y2 - y1, math.dist((x3, y3), (x4, y4)))
+        self.assertLess(math.dist((x3, y3), (x4, y4)), 1e-3, 'still moving with a stale cmd_vel')
+
+    def test_02_bad_cmd_vel_kills_nothing(self):
+        publisher = rospy.Publisher('cmd_vel', Twist, queue_size=10)
+        publish_until(publisher, [Twist(linear=Vector3(x=float('nan')))],
+                      lambda: self.rejected_count(CONTROLLER_STATUS, 'cmd_vel') >= 1,
+                      'the controller to report a rejected cmd_vel on /diagnostics')
+        self.assert_nodes_alive()
+        self.check_rejected_actuator_state()
+
+
+if __name__ == '__main__':
+    rospy.init_node(NAME)
+    mode = rospy.get_param('~mode', 'tracking')
+    rostest.rosrun(PKG, NAME, TeleopCheck if mode == 'teleop' else TrackingCheck)
