@@ -79,7 +79,10 @@ void TerrainSimulation::step(double dt) {
   };
   OdeState x = toOde(state_);
   Stepper().do_step(closed_loop, x, t_, dt);
-  t_ += dt;
+  const double increment = dt - t_compensation_;
+  const double next_t = t_ + increment;
+  t_compensation_ = (next_t - t_) - increment;
+  t_ = next_t;
   state_ = checkedResult(kinematics_, x, t_);
 }
 

@@ -50,6 +50,7 @@ class TerrainSimulation {
   const ReferencePath& path_;
   TerrainState state_;
   double t_ = 0.0;
+  double t_compensation_ = 0.0;  ///< Kahan: 40,000 steps of 5 ms end at exactly 200 s
   mutable std::array<std::pair<double, DesiredPoint>, 2> desired_cache_;
   mutable std::size_t desired_cache_next_ = 0;
 };
