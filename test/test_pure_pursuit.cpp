@@ -67,6 +67,10 @@ struct FrameCase {
   double psi;
 };
 
+void PrintTo(const FrameCase& c, std::ostream* os) {
+  *os << c.label << " (gradient " << c.gradient.transpose() << ", psi " << c.psi << ")";
+}
+
 class TrackingErrorInFrame : public ::testing::TestWithParam<FrameCase> {};
 
 TEST_P(TrackingErrorInFrame, ZetaIsTheSignedBearingFromHInTheTangentPlane) {
@@ -245,6 +249,10 @@ struct SideCase {
   RobotType type;
   double side;  // +1: target on the left, -1: on the right
 };
+
+void PrintTo(const SideCase& c, std::ostream* os) {
+  *os << toString(c.type) << ", target on the " << (c.side > 0 ? "left" : "right");
+}
 
 class ClosedLoopSign : public ::testing::TestWithParam<SideCase> {};
 

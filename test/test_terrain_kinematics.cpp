@@ -119,6 +119,10 @@ struct TypeModel {
   ContactModel model;
 };
 
+void PrintTo(const TypeModel& c, std::ostream* os) {
+  *os << toString(c.type) << ", " << toString(c.model) << " contact model";
+}
+
 std::vector<TypeModel> allTypeModels() {
   std::vector<TypeModel> v;
   for (auto m : {ContactModel::Paper, ContactModel::Rolling}) {
