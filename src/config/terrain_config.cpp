@@ -21,7 +21,7 @@ double nonNegative(const ParameterSource& source, const std::string& key, double
 terrain::PursuitGains loadGains(const ParameterSource& source, terrain::RobotType type,
                                 double k_e) {
   const std::string prefix = kRoot + "gains/" + terrain::toString(type) + "/";
-  terrain::PursuitGains gains;
+  terrain::PursuitGains gains = terrain::defaultGains(type);
   gains.k_e = k_e;
   const auto gain = [&](const char* name, double& value) {
     value = nonNegative(source, prefix + name, value);

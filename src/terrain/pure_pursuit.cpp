@@ -7,6 +7,12 @@
 
 namespace spherical_robots::terrain {
 
+PursuitGains defaultGains(RobotType type) {
+  PursuitGains gains;
+  if (type == RobotType::TwoAxisRolling) gains.k_phi1 = 3.0;
+  return gains;
+}
+
 void validate(const PursuitGains& gains) {
   const std::pair<const char*, double> all[] = {
       {"k_e", gains.k_e},           {"k_theta", gains.k_theta},   {"k_phi1", gains.k_phi1},
@@ -33,11 +39,9 @@ TrackingError trackingError(const ContactGeometry& geometry, const Eigen::Vector
   result.norm = result.error.norm();
   const double along_heading = result.error.dot(geometry.heading_frame.col(0));
   const double along_left = result.error.dot(geometry.heading_frame.col(1));
-  const double in_plane = std::hypot(along_heading, along_left);
-  if (in_plane > 0.0) {
+  // Along n the direction in the plane is round-off, not information.
+  if (std::hypot(along_heading, along_left) > 1e-12 * result.norm) {
     result.zeta = std::atan2(along_left, along_heading);
-    result.cos_zeta = along_heading / in_plane;
-    result.sin_zeta = along_left / in_plane;
   }
   return result;
 }
@@ -59,8 +63,8 @@ DriveRates PurePursuitController::command(const TrackingError& error,
   }
   const double normalised = error.norm / (gains_.k_e + error.norm);
   const double feed_forward = desired_velocity.norm() / radius_;
-  const double cos_zeta = error.cos_zeta;
-  const double sin_zeta = error.sin_zeta;
+  const double cos_zeta = std::cos(error.zeta);
+  const double sin_zeta = std::sin(error.zeta);
   const auto lateral = [&](double k_phi1, double k_phi2) {
     return -(k_phi1 * normalised + k_phi2) * sin_zeta;
   };

@@ -10,7 +10,8 @@
 
 namespace spherical_robots::terrain {
 
-/// Gains; each type reads only its own (defaults in config/terrain.yaml).
+/// Gains; each type reads only its own. The member defaults are 3R's and RT's; defaultGains()
+/// gives every type's (the values, also in config/terrain.yaml).
 struct PursuitGains {
   double k_e = 0.5;  ///< error normalisation [m] (eqs 55-58)
   // 3R (eq 55) and RT (eq 57)
@@ -26,6 +27,9 @@ struct PursuitGains {
   double k_phi = 2.0;
 };
 
+/// The default gains of a robot type (2R: k_theta1 3.0, k_theta2 0.3, k_phi1 3.0, k_phi2 0.3).
+PursuitGains defaultGains(RobotType type);
+
 /// Throws std::invalid_argument naming the first gain that is non-finite or negative, or k_e <= 0.
 void validate(const PursuitGains& gains);
 
@@ -34,10 +38,9 @@ struct TrackingError {
   Eigen::Vector3d error = Eigen::Vector3d::Zero();  ///< e_t = p_d - P0 [m] (eq 53)
   double norm = 0.0;                                ///< |e_t| [m]
   /// Angle [rad] in (-pi, pi] from h to e_t's projection on the tangent plane, right-handed
-  /// about n: positive when the target is to the left (eq 54 gives only its magnitude).
+  /// about n: positive when the target is to the left (eq 54 gives only its magnitude). 0 when
+  /// e_t has no component in the tangent plane (below 1e-12 |e_t|, i.e. round-off).
   double zeta = 0.0;
-  double cos_zeta = 1.0;  ///< cos(zeta), from the projection itself (no extra trigonometry)
-  double sin_zeta = 0.0;  ///< sin(zeta)
 };
 
 TrackingError trackingError(const ContactGeometry& geometry, const Eigen::Vector3d& desired);
