@@ -20,10 +20,16 @@ sr_step() {
 
 sr_install() { bash "$SR_ROOT/scripts/install_deps.sh"; }
 
-# Incremental: a second build only recompiles what changed.
+# Incremental: a second build only recompiles what changed. Compiler output goes to
+# log/latest_build/spherical_robots/stderr.log; its tail is shown if the build fails.
 sr_build() {
+  local stderr_log=$SR_ROOT/log/latest_build/spherical_robots/stderr.log warnings
   (cd "$SR_ROOT" && colcon build --base-paths . --build-base build --install-base install \
-    --cmake-args -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3)
+    --event-handlers console_stderr- \
+    --cmake-args -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3) \
+    || { [ ! -f "$stderr_log" ] || tail -60 "$stderr_log"; return 1; }
+  warnings=$(grep -c 'warning:' "$stderr_log" 2>/dev/null || true)
+  [ "${warnings:-0}" -eq 0 ] || sr_log "$warnings compiler warnings: see ${stderr_log#"$SR_ROOT"/}"
 }
 
 # Puts the built package (nodes, launch files, python message classes) into the environment.

@@ -173,6 +173,9 @@ def main(argv=None):
     print("terrain run (%s)" % run.get("robot", "?"))
     for label, text in rows:
         print("  %-22s %s" % (label + ":", text))
+    if s["times"][0] > 0.5:
+        print("  note: the bag starts at t = %.2f s; the run before that was not recorded"
+              % s["times"][0])
     return 0
 
 
