@@ -119,16 +119,6 @@ nav_msgs::Odometry toOdometry(const Eigen::Vector3d& position, const Eigen::Quat
   return msg;
 }
 
-std::vector<std::string> actuatorNames(terrain::RobotType type) {
-  const auto actuated = terrain::actuatedRates(type);
-  const auto names = terrain::rateNames(type);
-  std::vector<std::string> result;
-  for (std::size_t i = 0; i < actuated.size(); ++i) {
-    if (actuated[i]) result.emplace_back(names[i]);
-  }
-  return result;
-}
-
 terrain::DriveRates ratesFromJointState(terrain::RobotType type, const sensor_msgs::JointState& msg) {
   if (msg.velocity.size() < msg.name.size()) {
     std::ostringstream what;

@@ -96,7 +96,7 @@ void TerrainPlantRos::tick(const ros::Time& now) {
   updater_.update();
 
   if (duration_ > 0.0 && (now - start_).toSec() >= duration_ - 1e-9) {
-    ROS_INFO_STREAM("scenario complete: " << duration_ << " s simulated, contact point at ("
+    ROS_INFO_STREAM("scenario complete after " << duration_ << " s, contact point at ("
                                           << state_.x << ", " << state_.y << ") m");
     finished_ = true;
     ros::shutdown();

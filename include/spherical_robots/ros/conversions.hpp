@@ -58,12 +58,9 @@ nav_msgs::Odometry toOdometry(const Eigen::Vector3d& position, const Eigen::Quat
 
 // --- Drive rates <-> actuators -----------------------------------------------------------------
 
-/// The type's actuator names in DriveRates order (3R theta, phi, psi; 2R theta, phi; RT theta,
-/// psi; RS alpha, phi), as on actuators/command and actuators/state.
-std::vector<std::string> actuatorNames(terrain::RobotType type);
-
-/// Drive rates [rad/s] from the velocities of a JointState; rates the type does not actuate are 0,
-/// names the type does not have are ignored.
+/// Drive rates [rad/s] from the velocities of a JointState named by the type's actuators
+/// (terrain::rateNames: 3R theta, phi, psi; 2R theta, phi; RT theta, psi; RS alpha, phi); rates the
+/// type does not actuate are 0, names the type does not have are ignored.
 /// @throw std::invalid_argument if an actuator of the type is missing, the velocity array is
 /// shorter than the name array, or a velocity is not finite.
 terrain::DriveRates ratesFromJointState(terrain::RobotType type, const sensor_msgs::JointState& msg);

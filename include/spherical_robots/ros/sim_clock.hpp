@@ -25,7 +25,6 @@ class SimClock {
   SimClock(ros::NodeHandle nh, double step, double speedup, Tick tick);
 
   bool ownsClock() const { return speedup_ > 0.0; }
-  double step() const { return step_; }
   /// ROS seconds per wall second since the first tick [-]; NaN before the second tick.
   double realTimeFactor() const;
 

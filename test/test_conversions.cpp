@@ -1,0 +1,223 @@
+// Core types <-> ROS messages (src/ros/conversions.cpp), without a master.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/terrain/reference_path.hpp"
+#include "spherical_robots/terrain/surface.hpp"
+#include "spherical_robots/terrain/tangent_frame.hpp"
+
+namespace sr = spherical_robots;
+namespace conv = spherical_robots::conversions;
+using sr::terrain::RobotType;
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+sensor_msgs::JointState jointState(std::vector<std::string> names, std::vector<double> velocities) {
+  sensor_msgs::JointState msg;
+  msg.name = std::move(names);
+  msg.velocity = std::move(velocities);
+  return msg;
+}
+
+geometry_msgs::Twist twist(double vx, double vy, double wz) {
+  geometry_msgs::Twist msg;
+  msg.linear.x = vx;
+  msg.linear.y = vy;
+  msg.angular.z = wz;
+  return msg;
+}
+
+}  // namespace
+
+TEST(JointStateConversion, ReadsRatesByNameInAnyOrder) {
+  const auto rates = conv::ratesFromJointState(
+      RobotType::ThreeAxisRolling, jointState({"psi", "theta", "extra", "phi"}, {3.0, 1.0, 9.0, 2.0}));
+  EXPECT_EQ(rates.roll_rate, 1.0);
+  EXPECT_EQ(rates.lateral_rate, 2.0);
+  EXPECT_EQ(rates.turn_rate, 3.0);
+}
+
+TEST(JointStateConversion, UnactuatedRatesAreZero) {
+  const auto rt = conv::ratesFromJointState(RobotType::RollingAndTurning,
+                                            jointState({"theta", "psi", "phi"}, {1.0, 3.0, 2.0}));
+  EXPECT_EQ(rt.roll_rate, 1.0);
+  EXPECT_EQ(rt.lateral_rate, 0.0);
+  EXPECT_EQ(rt.turn_rate, 3.0);
+  const auto rs = conv::ratesFromJointState(RobotType::RollingAndSteering,
+                                            jointState({"alpha", "phi", "psi"}, {1.0, 2.0, 3.0}));
+  EXPECT_EQ(rs.roll_rate, 1.0);
+  EXPECT_EQ(rs.lateral_rate, 2.0);
+  EXPECT_EQ(rs.turn_rate, 0.0);
+}
+
+TEST(JointStateConversion, RejectsMissingNamesNonFiniteValuesAndShortArrays) {
+  EXPECT_THROW(conv::ratesFromJointState(RobotType::TwoAxisRolling, jointState({"theta"}, {1.0})),
+               std::invalid_argument);
+  EXPECT_THROW(conv::ratesFromJointState(RobotType::TwoAxisRolling,
+                                         jointState({"theta", "phi"}, {1.0, kNaN})),
+               std::invalid_argument);
+  EXPECT_THROW(conv::ratesFromJointState(RobotType::TwoAxisRolling,
+                                         jointState({"theta", "phi"}, {1.0})),
+               std::invalid_argument);
+  // A non-finite value of a joint the type does not have is none of its business.
+  EXPECT_NO_THROW(conv::ratesFromJointState(RobotType::TwoAxisRolling,
+                                            jointState({"theta", "phi", "psi"}, {1.0, 2.0, kNaN})));
+}
+
+TEST(JointStateConversion, WritesTheTypesActuatorsOnly) {
+  const sr::terrain::DriveRates rates{1.0, 2.0, 3.0};
+  const auto msg = conv::jointStateFromRates(RobotType::RollingAndTurning, rates, ros::Time(5.0));
+  EXPECT_EQ(msg.name, (std::vector<std::string>{"theta", "psi"}));
+  EXPECT_EQ(msg.velocity, (std::vector<double>{1.0, 3.0}));
+  EXPECT_TRUE(msg.position.empty());
+  EXPECT_EQ(msg.header.stamp, ros::Time(5.0));
+  for (RobotType type : {RobotType::ThreeAxisRolling, RobotType::TwoAxisRolling,
+                         RobotType::RollingAndTurning, RobotType::RollingAndSteering}) {
+    const auto round_trip = conv::ratesFromJointState(type, conv::jointStateFromRates(type, rates, {}));
+    const auto expected = sr::terrain::keepActuated(type, rates);
+    EXPECT_EQ(round_trip.roll_rate, expected.roll_rate);
+    EXPECT_EQ(round_trip.lateral_rate, expected.lateral_rate);
+    EXPECT_EQ(round_trip.turn_rate, expected.turn_rate);
+  }
+}
+
+TEST(TwistConversion, MapsByTheConventions) {
+  const double radius = 0.2;
+  const auto three = conv::ratesFromTwist(RobotType::ThreeAxisRolling, twist(0.2, 0.1, 0.5), radius);
+  EXPECT_DOUBLE_EQ(three.rates.roll_rate, 1.0);      // v / R
+  EXPECT_DOUBLE_EQ(three.rates.lateral_rate, -0.5);  // -v_y / R: moves left (+l)
+  EXPECT_DOUBLE_EQ(three.rates.turn_rate, 0.5);
+  EXPECT_TRUE(three.ignored.empty());
+
+  const auto two = conv::ratesFromTwist(RobotType::TwoAxisRolling, twist(0.2, 0.1, 0.5), radius);
+  EXPECT_DOUBLE_EQ(two.rates.lateral_rate, -0.5);
+  EXPECT_EQ(two.rates.turn_rate, 0.0);
+  EXPECT_EQ(two.ignored, (std::vector<std::string>{"angular.z"}));
+
+  const auto rt = conv::ratesFromTwist(RobotType::RollingAndTurning, twist(0.2, 0.1, 0.5), radius);
+  EXPECT_EQ(rt.rates.lateral_rate, 0.0);
+  EXPECT_DOUBLE_EQ(rt.rates.turn_rate, 0.5);
+  EXPECT_EQ(rt.ignored, (std::vector<std::string>{"linear.y"}));
+
+  // RS turns left (angular.z > 0) by tilting to phi < 0 (eq 44: psi_dot = -alpha_dot sin phi).
+  const auto rs = conv::ratesFromTwist(RobotType::RollingAndSteering, twist(0.2, 0.1, 0.5), radius);
+  EXPECT_DOUBLE_EQ(rs.rates.roll_rate, 1.0);
+  EXPECT_DOUBLE_EQ(rs.rates.lateral_rate, -0.5);
+  EXPECT_EQ(rs.rates.turn_rate, 0.0);
+  EXPECT_EQ(rs.ignored, (std::vector<std::string>{"linear.y"}));
+}
+
+TEST(TwistConversion, ListsImpossibleFieldsAndRejectsBadInput) {
+  geometry_msgs::Twist msg = twist(0.0, 0.0, 0.0);
+  msg.linear.z = 1.0;
+  msg.angular.x = 1.0;
+  const auto result = conv::ratesFromTwist(RobotType::ThreeAxisRolling, msg, 0.2);
+  EXPECT_EQ(result.ignored, (std::vector<std::string>{"linear.z", "angular.x"}));
+  EXPECT_THROW(conv::ratesFromTwist(RobotType::ThreeAxisRolling, twist(kNaN, 0, 0), 0.2),
+               std::invalid_argument);
+  EXPECT_THROW(conv::ratesFromTwist(RobotType::ThreeAxisRolling, twist(0, 0, 0), 0.0),
+               std::invalid_argument);
+}
+
+TEST(TerrainStateConversion, GeometryRoundTrip) {
+  const sr::terrain::CosineSurface surface(0.2, 2.0);
+  const double x = 0.7, y = -0.4, psi = 1.1, radius = 0.2;
+  sr::terrain::ContactGeometry geometry;
+  geometry.gradient = surface.gradient(x, y);
+  geometry.heading_frame = sr::terrain::headingFrame(geometry.gradient, psi);
+  geometry.contact_point = {x, y, surface.height(x, y)};
+  geometry.centre = geometry.contact_point + radius * geometry.heading_frame.col(2);
+  sr::terrain::TerrainState state;
+  state.x = x;
+  state.y = y;
+  state.psi = psi;
+
+  const auto msg = conv::toTerrainStateMsg(RobotType::ThreeAxisRolling,
+                                           sr::terrain::ContactModel::Paper, state, geometry,
+                                           {1.0, 2.0, 3.0}, ros::Time(2.0));
+  EXPECT_EQ(msg.robot_type, "3R");
+  EXPECT_EQ(msg.contact_model, "paper");
+  EXPECT_EQ(msg.header.frame_id, "world");
+  EXPECT_EQ(msg.turn_rate, 3.0);
+
+  const auto back = conv::contactGeometryFromMsg(msg);
+  EXPECT_TRUE(back.contact_point.isApprox(geometry.contact_point, 1e-12));
+  EXPECT_TRUE(back.centre.isApprox(geometry.centre, 1e-12));
+  EXPECT_TRUE(back.heading_frame.isApprox(geometry.heading_frame, 1e-12));
+  EXPECT_TRUE(back.gradient.isApprox(geometry.gradient, 1e-12));
+}
+
+TEST(TerrainStateConversion, RejectsBadGeometry) {
+  spherical_robots::TerrainState msg;
+  msg.normal.z = 1.0;
+  msg.heading.x = 1.0;
+  EXPECT_NO_THROW(conv::contactGeometryFromMsg(msg));
+
+  auto bad = msg;
+  bad.contact_point.y = kNaN;
+  EXPECT_THROW(conv::contactGeometryFromMsg(bad), std::invalid_argument);
+  bad = msg;
+  bad.normal.z = 2.0;  // not unit
+  EXPECT_THROW(conv::contactGeometryFromMsg(bad), std::invalid_argument);
+  bad = msg;
+  bad.heading.x = 0.0;  // h = n
+  bad.heading.z = 1.0;
+  EXPECT_THROW(conv::contactGeometryFromMsg(bad), std::invalid_argument);
+  bad = msg;
+  bad.normal.z = -1.0;  // points down
+  EXPECT_THROW(conv::contactGeometryFromMsg(bad), std::invalid_argument);
+}
+
+TEST(OdometryConversion, TwistIsInTheChildFrame) {
+  // base_link turned 90 degrees about z: world +x is body -y.
+  const Eigen::Quaterniond orientation(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+  const auto msg = conv::toOdometry({1, 2, 3}, orientation, {1, 0, 0}, {0, 0, 2}, "world",
+                                    "sphere/base_link", ros::Time(1.0));
+  EXPECT_EQ(msg.child_frame_id, "sphere/base_link");
+  EXPECT_NEAR(msg.twist.twist.linear.x, 0.0, 1e-12);
+  EXPECT_NEAR(msg.twist.twist.linear.y, -1.0, 1e-12);
+  EXPECT_NEAR(msg.twist.twist.angular.z, 2.0, 1e-12);
+  EXPECT_NEAR(msg.pose.pose.orientation.w, std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(msg.pose.pose.orientation.z, std::sqrt(0.5), 1e-12);
+}
+
+TEST(Visualisation, SampledPathClosesOnTheSurface) {
+  const sr::terrain::CosineSurface surface(0.2, 2.0);
+  const sr::terrain::CirclePath circle(2.0, 0.05);
+  const auto path = conv::sampledPath(circle, surface, 100, "world", ros::Time(1.0));
+  ASSERT_EQ(path.poses.size(), 100u);
+  for (const auto& pose : path.poses) {
+    const auto& p = pose.pose.position;
+    EXPECT_NEAR(std::hypot(p.x, p.y), 2.0, 1e-12);
+    EXPECT_NEAR(p.z, surface.height(p.x, p.y), 1e-12);
+  }
+  EXPECT_NEAR(path.poses.front().pose.position.x, path.poses.back().pose.position.x, 1e-9);
+  EXPECT_NEAR(path.poses.front().pose.position.y, path.poses.back().pose.position.y, 1e-9);
+  EXPECT_THROW(conv::sampledPath(circle, surface, 1, "world", {}), std::invalid_argument);
+}
+
+TEST(Visualisation, SurfaceMeshCoversTheSquare) {
+  const sr::terrain::CosineSurface surface(0.2, 2.0);
+  const auto mesh = conv::surfaceMesh(surface, 3.0, 0.1, "world", ros::Time(1.0));
+  EXPECT_EQ(mesh.type, visualization_msgs::Marker::TRIANGLE_LIST);
+  ASSERT_EQ(mesh.points.size(), 60u * 60u * 6u);
+  EXPECT_EQ(mesh.colors.size(), mesh.points.size());
+  for (const auto& p : mesh.points) {
+    EXPECT_LE(std::abs(p.x), 3.0 + 1e-12);
+    EXPECT_LE(std::abs(p.y), 3.0 + 1e-12);
+    EXPECT_NEAR(p.z, surface.height(p.x, p.y), 1e-12);
+  }
+  EXPECT_THROW(conv::surfaceMesh(surface, 3.0, 0.0, "world", {}), std::invalid_argument);
+  EXPECT_THROW(conv::surfaceMesh(surface, 3.0, 1e-4, "world", {}), std::invalid_argument);
+}
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
