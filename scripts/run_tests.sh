@@ -32,12 +32,12 @@ sr_log "${summary:-Summary: no test results found}   (ROS logs: $ROS_HOME/log)"
 sr_log "total $((SECONDS - total_start)) s"
 
 counts=$(echo "$summary" |
-  sed -nE 's/^Summary: ([0-9]+) tests, ([0-9]+) errors, ([0-9]+) failures.*/\1 \2 \3/p')
-read -r ran errors failures <<< "${counts:-0 0 0}"
+  sed -nE 's/^Summary: ([0-9]+) tests, ([0-9]+) errors, ([0-9]+) failures, ([0-9]+) skipped.*/\1 \2 \3 \4/p')
+read -r ran errors failures skipped <<< "${counts:-0 0 0 0}"
 if [ "$ran" -eq 0 ]; then
   sr_log "FAILED: no tests ran"; exit 1
 fi
 if [ "$errors" -ne 0 ] || [ "$failures" -ne 0 ] || [ "$test_rc" -ne 0 ]; then
   sr_log "FAILED: $failures failures, $errors errors (colcon test exit $test_rc)"; exit 1
 fi
-sr_log "OK: $ran tests passed"
+sr_log "OK: $ran tests ran ($skipped of them skipped), none failed"
