@@ -56,7 +56,7 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
                                                kWorldFrame, ros::Time::now()));
   trail_.header.frame_id = kWorldFrame;
 
-  updater_.setHardwareID(terrain::toString(type_) + " sphere R=" + std::to_string(radius) + " m");
+  updater_.setHardwareID(terrain::toString(type_) + " sphere");
   updater_.add("terrain plant", this, &TerrainPlantRos::diagnose);
 
   const bool publish_clock = boolParam(pnh, "publish_clock", false);
