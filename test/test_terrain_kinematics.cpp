@@ -213,6 +213,8 @@ TEST_P(KinematicsOnCosine, DriveRatesSetTheVelocityTheModelSays) {
       const Eigen::Vector3d omega = kin_.shellAngularVelocity(s, kCommand);
       EXPECT_LE((omega.cross(kR * rl.col(2)) - vc).norm(), 1e-8);  // no slip at the contact
     }
+    // The centre's velocity, both models: finite differences of C = P0 + R n along the motion.
+    EXPECT_LE((kin_.centreVelocity(s, kCommand) - centreVelocity(surface_, s, rate)).norm(), 1e-8);
     // The overload taking precomputed geometry agrees.
     const TerrainStateRate again = kin_.stateRate(s, kin_.geometry(s), kCommand);
     EXPECT_EQ(again.x_dot, rate.x_dot);

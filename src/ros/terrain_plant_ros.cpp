@@ -106,7 +106,6 @@ void TerrainPlantRos::tick(const ros::Time& now) {
 void TerrainPlantRos::integrate(double elapsed, const terrain::DriveRates& rates) {
   const int steps = std::max(1, static_cast<int>(std::ceil(elapsed / step_ - 1e-9)));
   const double dt = elapsed / steps;
-  const Eigen::Vector3d centre_before = kinematics_->geometry(state_).centre;
   try {
     for (int i = 0; i < steps; ++i) {
       const Eigen::Vector3d omega = kinematics_->shellAngularVelocity(state_, rates);
@@ -119,14 +118,14 @@ void TerrainPlantRos::integrate(double elapsed, const terrain::DriveRates& rates
                                                           << " so far), holding the last good state: "
                                                           << e.what());
   }
-  centre_velocity_ = (kinematics_->geometry(state_).centre - centre_before) / elapsed;
 }
 
 void TerrainPlantRos::publishState(const ros::Time& now, const terrain::DriveRates& rates) {
   last_publish_ = now;
   const terrain::ContactGeometry geometry = kinematics_->geometry(state_);
   const Eigen::Quaterniond heading(geometry.heading_frame);
-  odom_pub_.publish(conversions::toOdometry(geometry.centre, orientation_, centre_velocity_,
+  odom_pub_.publish(conversions::toOdometry(geometry.centre, orientation_,
+                                            kinematics_->centreVelocity(state_, rates),
                                             kinematics_->shellAngularVelocity(state_, rates),
                                             kWorldFrame, base_frame_, now));
   tf_broadcaster_.sendTransform(

@@ -103,17 +103,9 @@ TerrainStateRate TerrainKinematics::stateRate(const TerrainState& state,
     rate.y_dot = velocity.y();
     return rate;
   }
-  // Rolling: velocity is the centre's. C(x, y) = P0 + R n, with dn/dx_j = (I - n n^T) dN/dx_j / |N|
-  // for N = (-f_x, -f_y, 1); solve [dC/dx dC/dy] (x', y') = velocity in the tangent plane.
-  const Eigen::Vector3d& n = frame.col(2);
-  const Eigen::Matrix2d& hessian = geometry.hessian;
-  const double normal_length = std::sqrt(1.0 + geometry.gradient.squaredNorm());
-  const Eigen::Matrix3d projector = Eigen::Matrix3d::Identity() - n * n.transpose();
-  Eigen::Matrix<double, 3, 2> jacobian;
-  jacobian << 1.0, 0.0, 0.0, 1.0, geometry.gradient.x(), geometry.gradient.y();
-  Eigen::Matrix<double, 3, 2> normal_derivative;
-  normal_derivative << -hessian(0, 0), -hessian(0, 1), -hessian(1, 0), -hessian(1, 1), 0.0, 0.0;
-  jacobian += (radius_ / normal_length) * projector * normal_derivative;
+  // Rolling: velocity is the centre's; solve [dC/dx dC/dy] (x', y') = velocity, which lies in
+  // the tangent plane like both columns.
+  const Eigen::Matrix<double, 3, 2> jacobian = centreJacobian(geometry);
   const Eigen::Matrix2d gram = jacobian.transpose() * jacobian;
   const double determinant = gram.determinant();
   if (!(determinant > 1e-12 * gram.trace() * gram.trace())) {
@@ -126,6 +118,27 @@ TerrainStateRate TerrainKinematics::stateRate(const TerrainState& state,
   rate.x_dot = contact_rate.x();
   rate.y_dot = contact_rate.y();
   return rate;
+}
+
+// With N = (-f_x, -f_y, 1): dn/dx_j = (I - n n^T) dN/dx_j / |N|.
+Eigen::Matrix<double, 3, 2> TerrainKinematics::centreJacobian(
+    const ContactGeometry& geometry) const {
+  const Eigen::Vector3d& n = geometry.heading_frame.col(2);
+  const Eigen::Matrix2d& hessian = geometry.hessian;
+  const double normal_length = std::sqrt(1.0 + geometry.gradient.squaredNorm());
+  const Eigen::Matrix3d projector = Eigen::Matrix3d::Identity() - n * n.transpose();
+  Eigen::Matrix<double, 3, 2> jacobian;
+  jacobian << 1.0, 0.0, 0.0, 1.0, geometry.gradient.x(), geometry.gradient.y();
+  Eigen::Matrix<double, 3, 2> normal_derivative;
+  normal_derivative << -hessian(0, 0), -hessian(0, 1), -hessian(1, 0), -hessian(1, 1), 0.0, 0.0;
+  return jacobian + (radius_ / normal_length) * projector * normal_derivative;
+}
+
+Eigen::Vector3d TerrainKinematics::centreVelocity(const TerrainState& state,
+                                                  const DriveRates& commanded) const {
+  const ContactGeometry contact = geometry(state);
+  const TerrainStateRate rate = stateRate(state, contact, commanded);
+  return centreJacobian(contact) * Eigen::Vector2d(rate.x_dot, rate.y_dot);
 }
 
 // Eq 46 (for RS, the shell turns by psi_dot = -alpha_dot sin(phi) about n, cancelling the tilted

@@ -62,7 +62,6 @@ class TerrainPlantRos {
   std::unique_ptr<terrain::TerrainKinematics> kinematics_;
   terrain::TerrainState state_;
   Eigen::Quaterniond orientation_;  ///< shell (base_link) orientation, world <- body
-  Eigen::Vector3d centre_velocity_ = Eigen::Vector3d::Zero();  ///< over the last tick [m/s]
   terrain::DriveRates measured_;
   unsigned long integration_failures_ = 0;
   unsigned long failures_at_last_report_ = 0;

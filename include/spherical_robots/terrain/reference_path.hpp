@@ -54,8 +54,8 @@ class DiamondPath final : public ReferencePath {
 
 /// A desired point on the terrain and its 3D velocity.
 struct DesiredPoint {
-  Eigen::Vector3d position;  ///< p_d [m]
-  Eigen::Vector3d velocity;  ///< (x_d', y_d', f_x x_d' + f_y y_d') [m/s]
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< p_d [m]
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  ///< (x_d', y_d', f_x x_d' + f_y y_d') [m/s]
 };
 
 DesiredPoint liftOntoSurface(const ReferencePath& path, const Surface& surface, double t);

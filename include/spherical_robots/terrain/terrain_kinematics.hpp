@@ -82,10 +82,17 @@ class TerrainKinematics {
   /// theta_dot l + phi_dot h + psi_dot n (eq 46 for RS: alpha_dot (cos phi l + sin phi n) + ...).
   Eigen::Vector3d shellAngularVelocity(const TerrainState& state, const DriveRates& commanded) const;
 
+  /// Velocity [m/s] of the sphere's centre O_Sp = P0 + R n (eq 51): Omega x R n in the rolling
+  /// model, (I + R dn/dP0) dP0/dt in the paper model.
+  Eigen::Vector3d centreVelocity(const TerrainState& state, const DriveRates& commanded) const;
+
   /// Clamps phi into the tilt limit (RS) after an integration step.
   TerrainState constrain(const TerrainState& state) const;
 
  private:
+  /// [dC/dx dC/dy] for the centre C(x, y) = P0 + R n(P0) as a function of the contact point.
+  Eigen::Matrix<double, 3, 2> centreJacobian(const ContactGeometry& geometry) const;
+
   const Surface& surface_;
   RobotType type_;
   double radius_;
