@@ -109,8 +109,8 @@ def plot(run, s, threshold, steady_from, out, title):
     ax_xy.plot([p[0] for p in desired], [p[1] for p in desired], "k--", lw=1.2, label=label)
     xs, ys = [p[0] for p in run["states"]], [p[1] for p in run["states"]]
     ax_xy.plot(xs, ys, "C0-", lw=1.5, label="driven (contact point P0)")
-    ax_xy.plot(xs[0], ys[0], "go", label="start")
-    ax_xy.plot(xs[-1], ys[-1], "rs", label="end")
+    ax_xy.plot(xs[0], ys[0], "go", label="first sample")
+    ax_xy.plot(xs[-1], ys[-1], "rs", label="last sample")
     ax_xy.set_xlabel("x [m]")
     ax_xy.set_ylabel("y [m]")
     ax_xy.set_aspect("equal", adjustable="datalim")
