@@ -10,8 +10,10 @@
 
 namespace spherical_robots {
 
-SimClock::SimClock(ros::NodeHandle nh, double step, double speedup, Tick tick)
-    : step_(step), speedup_(speedup), tick_(std::move(tick)) {
+SimClock::SimClock(ros::NodeHandle nh, double step, double speedup, Tick tick, Ready ready,
+                   double ready_timeout)
+    : step_(step), speedup_(speedup), tick_(std::move(tick)), ready_(std::move(ready)),
+      ready_timeout_(ready_timeout), created_wall_(ros::WallTime::now()) {
   if (!(step > 0.0) || !std::isfinite(step) || !std::isfinite(speedup)) {
     std::ostringstream what;
     what << "SimClock: step = " << step << " s must be positive and finite, speedup = " << speedup
@@ -33,7 +35,7 @@ SimClock::SimClock(ros::NodeHandle nh, double step, double speedup, Tick tick)
   }
   clock_pub_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 10);
   wall_timer_ = nh.createWallTimer(ros::WallDuration(step_ / speedup_), [this](const ros::WallTimerEvent&) {
-    onTick(now_ + ros::Duration(step_));
+    if (started_ || hasStarted()) onTick(now_ + ros::Duration(step_));
   });
   ROS_INFO_STREAM("Publishing /clock: " << step_ << " s per tick at " << speedup_ << "x real time");
 }
@@ -50,6 +52,20 @@ void SimClock::onTick(const ros::Time& now) {
     clock_pub_.publish(clock);
   }
   tick_(now);
+}
+
+bool SimClock::hasStarted() {
+  const double waited = (ros::WallTime::now() - created_wall_).toSec();
+  if (ready_()) {
+    ROS_INFO_STREAM("Starting simulated time after " << waited << " s of wall time");
+  } else if (waited >= ready_timeout_) {
+    ROS_WARN_STREAM("Starting simulated time without all expected subscribers after waiting "
+                    << ready_timeout_ << " s");
+  } else {
+    return false;
+  }
+  started_ = true;
+  return true;
 }
 
 double SimClock::realTimeFactor() const {

@@ -65,7 +65,14 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
                                            << terrain::toString(model) << " contact model, on "
                                            << surface_->describe() << "; frames " << base_frame_
                                            << ", " << heading_frame_);
-  clock_ = std::make_unique<SimClock>(nh, step_, speedup, [this](const ros::Time& now) { tick(now); });
+  const int expected_subscribers = static_cast<int>(numberParam(pnh, "wait_for_subscribers", 1.0));
+  clock_ = std::make_unique<SimClock>(
+      nh, step_, speedup, [this](const ros::Time& now) { tick(now); },
+      [this, expected_subscribers] {
+        return static_cast<int>(state_pub_.getNumSubscribers()) >= expected_subscribers &&
+               actuator_sub_.getNumPublishers() > 0;
+      },
+      positiveParam(pnh, "start_timeout", 10.0));
 }
 
 void TerrainPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {

@@ -19,10 +19,15 @@ namespace spherical_robots {
 class SimClock {
  public:
   using Tick = std::function<void(const ros::Time& now)>;
+  using Ready = std::function<bool()>;
 
   /// @param step [s] > 0, @param speedup [-] finite. @throw std::invalid_argument on a bad step or
   /// speedup, or on speedup > 0 while /use_sim_time is false.
-  SimClock(ros::NodeHandle nh, double step, double speedup, Tick tick);
+  /// When it owns the clock, time does not start until `ready` holds (e.g. the controller and a
+  /// bag recorder have subscribed, so no simulated second goes unseen) or `ready_timeout` wall
+  /// seconds have passed, after which it starts anyway with a warning.
+  SimClock(ros::NodeHandle nh, double step, double speedup, Tick tick,
+           Ready ready = [] { return true; }, double ready_timeout = 0.0);
 
   bool ownsClock() const { return speedup_ > 0.0; }
   /// ROS seconds per wall second since the first tick [-]; NaN before the second tick.
@@ -30,10 +35,16 @@ class SimClock {
 
  private:
   void onTick(const ros::Time& now);
+  /// Whether simulated time may start now; logs once when it does.
+  bool hasStarted();
 
   double step_;
   double speedup_;
   Tick tick_;
+  Ready ready_;
+  double ready_timeout_;
+  ros::WallTime created_wall_;
+  bool started_ = false;
   ros::Publisher clock_pub_;
   ros::WallTimer wall_timer_;
   ros::Timer timer_;
