@@ -117,21 +117,31 @@ TerrainStateRate TerrainKinematics::stateRate(const TerrainState& state,
   const Eigen::Vector2d contact_rate = gram.inverse() * (jacobian.transpose() * velocity);
   rate.x_dot = contact_rate.x();
   rate.y_dot = contact_rate.y();
+  // The minimal-rotation tangent frame turns about n at z . (n' x n) / (1 + n_z) as n changes;
+  // psi, measured from it, must turn the other way for the heading to turn at turn_rate.
+  const Eigen::Vector3d& n = frame.col(2);
+  const Eigen::Vector3d normal_rate = normalJacobian(geometry) * contact_rate;
+  rate.psi_dot -= normal_rate.cross(n).z() / (1.0 + n.z());
   return rate;
 }
 
 // With N = (-f_x, -f_y, 1): dn/dx_j = (I - n n^T) dN/dx_j / |N|.
-Eigen::Matrix<double, 3, 2> TerrainKinematics::centreJacobian(
+Eigen::Matrix<double, 3, 2> TerrainKinematics::normalJacobian(
     const ContactGeometry& geometry) const {
   const Eigen::Vector3d& n = geometry.heading_frame.col(2);
   const Eigen::Matrix2d& hessian = geometry.hessian;
   const double normal_length = std::sqrt(1.0 + geometry.gradient.squaredNorm());
   const Eigen::Matrix3d projector = Eigen::Matrix3d::Identity() - n * n.transpose();
-  Eigen::Matrix<double, 3, 2> jacobian;
-  jacobian << 1.0, 0.0, 0.0, 1.0, geometry.gradient.x(), geometry.gradient.y();
-  Eigen::Matrix<double, 3, 2> normal_derivative;
-  normal_derivative << -hessian(0, 0), -hessian(0, 1), -hessian(1, 0), -hessian(1, 1), 0.0, 0.0;
-  return jacobian + (radius_ / normal_length) * projector * normal_derivative;
+  Eigen::Matrix<double, 3, 2> unnormalised;
+  unnormalised << -hessian(0, 0), -hessian(0, 1), -hessian(1, 0), -hessian(1, 1), 0.0, 0.0;
+  return projector * unnormalised / normal_length;
+}
+
+Eigen::Matrix<double, 3, 2> TerrainKinematics::centreJacobian(
+    const ContactGeometry& geometry) const {
+  Eigen::Matrix<double, 3, 2> contact_jacobian;
+  contact_jacobian << 1.0, 0.0, 0.0, 1.0, geometry.gradient.x(), geometry.gradient.y();
+  return contact_jacobian + radius_ * normalJacobian(geometry);
 }
 
 Eigen::Vector3d TerrainKinematics::centreVelocity(const TerrainState& state,

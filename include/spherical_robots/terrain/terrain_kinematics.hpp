@@ -17,6 +17,8 @@ enum class ContactModel {
   Paper,
   /// The rates are the shell's body rates: they set the velocity of the sphere's centre,
   /// V = Omega x R n, and P0 follows from the surface's curvature, (I + R dn/dP0) dP0/dt = V.
+  /// The heading turns about n at exactly the realised turn rate, so psi (measured from the
+  /// tangent frame) also absorbs that frame's own turning about n as P0 moves.
   Rolling,
 };
 
@@ -44,11 +46,11 @@ struct TerrainStateRate {
 
 /// Geometry of the robot at one state, in the world frame.
 struct ContactGeometry {
-  Eigen::Vector3d contact_point;  ///< P0 [m]
-  Eigen::Vector3d centre;         ///< O_Sp = P0 + R n (eq 51) [m]
-  Eigen::Matrix3d heading_frame;  ///< R_L, columns (h, l, n)
-  Eigen::Vector2d gradient;       ///< (f_x, f_y) at P0
-  Eigen::Matrix2d hessian;        ///< f's Hessian at P0 [1/m]
+  Eigen::Vector3d contact_point = Eigen::Vector3d::Zero();  ///< P0 [m]
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();         ///< O_Sp = P0 + R n (eq 51) [m]
+  Eigen::Matrix3d heading_frame = Eigen::Matrix3d::Identity();  ///< R_L, columns (h, l, n)
+  Eigen::Vector2d gradient = Eigen::Vector2d::Zero();       ///< (f_x, f_y) at P0
+  Eigen::Matrix2d hessian = Eigen::Matrix2d::Zero();        ///< f's Hessian at P0 [1/m]
 };
 
 class TerrainKinematics {
@@ -90,6 +92,8 @@ class TerrainKinematics {
   TerrainState constrain(const TerrainState& state) const;
 
  private:
+  /// [dn/dx dn/dy] of the unit normal as a function of the contact point [1/m].
+  Eigen::Matrix<double, 3, 2> normalJacobian(const ContactGeometry& geometry) const;
   /// [dC/dx dC/dy] for the centre C(x, y) = P0 + R n(P0) as a function of the contact point.
   Eigen::Matrix<double, 3, 2> centreJacobian(const ContactGeometry& geometry) const;
 
