@@ -87,42 +87,17 @@ TEST(JointStateConversion, WritesTheTypesActuatorsOnly) {
   }
 }
 
-TEST(TwistConversion, MapsByTheConventions) {
-  const double radius = 0.2;
-  const auto three = conv::ratesFromTwist(RobotType::ThreeAxisRolling, twist(0.2, 0.1, 0.5), radius);
-  EXPECT_DOUBLE_EQ(three.rates.roll_rate, 1.0);      // v / R
-  EXPECT_DOUBLE_EQ(three.rates.lateral_rate, -0.5);  // -v_y / R: moves left (+l)
-  EXPECT_DOUBLE_EQ(three.rates.turn_rate, 0.5);
-  EXPECT_TRUE(three.ignored.empty());
-
-  const auto two = conv::ratesFromTwist(RobotType::TwoAxisRolling, twist(0.2, 0.1, 0.5), radius);
-  EXPECT_DOUBLE_EQ(two.rates.lateral_rate, -0.5);
-  EXPECT_EQ(two.rates.turn_rate, 0.0);
-  EXPECT_EQ(two.ignored, (std::vector<std::string>{"angular.z"}));
-
-  const auto rt = conv::ratesFromTwist(RobotType::RollingAndTurning, twist(0.2, 0.1, 0.5), radius);
-  EXPECT_EQ(rt.rates.lateral_rate, 0.0);
-  EXPECT_DOUBLE_EQ(rt.rates.turn_rate, 0.5);
-  EXPECT_EQ(rt.ignored, (std::vector<std::string>{"linear.y"}));
-
-  // RS turns left (angular.z > 0) by tilting to phi < 0 (eq 44: psi_dot = -alpha_dot sin phi).
-  const auto rs = conv::ratesFromTwist(RobotType::RollingAndSteering, twist(0.2, 0.1, 0.5), radius);
-  EXPECT_DOUBLE_EQ(rs.rates.roll_rate, 1.0);
-  EXPECT_DOUBLE_EQ(rs.rates.lateral_rate, -0.5);
-  EXPECT_EQ(rs.rates.turn_rate, 0.0);
-  EXPECT_EQ(rs.ignored, (std::vector<std::string>{"linear.y"}));
-}
-
-TEST(TwistConversion, ListsImpossibleFieldsAndRejectsBadInput) {
-  geometry_msgs::Twist msg = twist(0.0, 0.0, 0.0);
+TEST(TwistConversion, TakesThePlanarPartAndListsTheRest) {
+  geometry_msgs::Twist msg = twist(0.2, 0.1, 0.5);
+  const auto planar = conv::planarTwist(msg);
+  EXPECT_EQ(planar.request.forward, 0.2);
+  EXPECT_EQ(planar.request.leftward, 0.1);
+  EXPECT_EQ(planar.request.yaw_rate, 0.5);
+  EXPECT_TRUE(planar.ignored.empty());
   msg.linear.z = 1.0;
   msg.angular.x = 1.0;
-  const auto result = conv::ratesFromTwist(RobotType::ThreeAxisRolling, msg, 0.2);
-  EXPECT_EQ(result.ignored, (std::vector<std::string>{"linear.z", "angular.x"}));
-  EXPECT_THROW(conv::ratesFromTwist(RobotType::ThreeAxisRolling, twist(kNaN, 0, 0), 0.2),
-               std::invalid_argument);
-  EXPECT_THROW(conv::ratesFromTwist(RobotType::ThreeAxisRolling, twist(0, 0, 0), 0.0),
-               std::invalid_argument);
+  EXPECT_EQ(conv::planarTwist(msg).ignored, (std::vector<std::string>{"linear.z", "angular.x"}));
+  EXPECT_THROW(conv::planarTwist(twist(kNaN, 0, 0)), std::invalid_argument);
 }
 
 TEST(TerrainStateConversion, GeometryRoundTrip) {

@@ -383,9 +383,10 @@ TEST_P(SphereSimRobotTest, DiamondRunRespectsTheRobotsConstraints) {
     EXPECT_NEAR(csv.at(i, "xd"), kDiamondHalf - along, kTight) << "t=" << t;
     EXPECT_NEAR(csv.at(i, "yd"), along, kTight) << "t=" << t;
     // Unactuated rates are zero (docs/conventions.md, table of types).
+    // (2R's psi is not 0 here: in the rolling model the heading is parallel-transported while
+    // psi is measured from the tangent frame, which turns by itself over curved ground.)
     if (robot == "2R") {
       EXPECT_EQ(csv.at(i, "turn_rate"), 0.0);
-      EXPECT_EQ(csv.at(i, "psi"), 0.0);
     }
     if (robot == "RT") {
       EXPECT_EQ(csv.at(i, "lateral_rate"), 0.0);

@@ -157,37 +157,14 @@ sensor_msgs::JointState jointStateFromRates(terrain::RobotType type, const terra
   return msg;
 }
 
-TeleopRates ratesFromTwist(terrain::RobotType type, const geometry_msgs::Twist& twist, double radius) {
-  if (!(radius > 0.0) || !std::isfinite(radius)) {
-    std::ostringstream what;
-    what << "radius = " << radius << " m must be positive and finite";
-    throw std::invalid_argument(what.str());
-  }
+PlanarTwist planarTwist(const geometry_msgs::Twist& twist) {
   const Eigen::Vector3d linear = fromVector3(twist.linear, "linear");
   const Eigen::Vector3d angular = fromVector3(twist.angular, "angular");
-  const bool rs = type == terrain::RobotType::RollingAndSteering;
-  const auto actuated = terrain::actuatedRates(type);
-
-  TeleopRates result;
-  auto ignoreIfSet = [&result](double value, const char* field) {
-    if (value != 0.0) result.ignored.emplace_back(field);
-  };
-  result.rates.roll_rate = linear.x() / radius;  // every type rolls forward
-  if (!rs && actuated[1]) {
-    result.rates.lateral_rate = -linear.y() / radius;
-  } else {
-    ignoreIfSet(linear.y(), "linear.y");
-  }
-  if (rs) {
-    result.rates.lateral_rate = -angular.z();
-  } else if (actuated[2]) {
-    result.rates.turn_rate = angular.z();
-  } else {
-    ignoreIfSet(angular.z(), "angular.z");
-  }
-  ignoreIfSet(linear.z(), "linear.z");
-  ignoreIfSet(angular.x(), "angular.x");
-  ignoreIfSet(angular.y(), "angular.y");
+  PlanarTwist result;
+  result.request = {linear.x(), linear.y(), angular.z()};
+  if (linear.z() != 0.0) result.ignored.emplace_back("linear.z");
+  if (angular.x() != 0.0) result.ignored.emplace_back("angular.x");
+  if (angular.y() != 0.0) result.ignored.emplace_back("angular.y");
   return result;
 }
 

@@ -4,6 +4,7 @@
 #include <nav_msgs/Path.h>
 #include <sensor_msgs/JointState.h>
 
+#include <cmath>
 #include <stdexcept>
 
 #include "spherical_robots/TrackingError.h"
@@ -32,17 +33,16 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
              positiveParam(pnh, "input_timeout", 0.5)),
       updater_(nh, pnh) {
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
-  const auto gains = terrain_config.gains.find(type_);
   controller_ = std::make_unique<terrain::PurePursuitController>(
-      type_, gains == terrain_config.gains.end() ? terrain::PursuitGains{} : gains->second, radius_);
+      type_, terrain_config.gains.at(type_), radius_);
 
   command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", 10);
+  state_sub_ = nh.subscribe("terrain_state", 10, &PurePursuitRos::onTerrainState, this);
   if (mode_ == Mode::Tracking) {
     surface_ = config::makeSurface(terrain_config.surface);
     path_ = parsedParam(pnh, "path", "circle", [&terrain_config](const std::string& name) {
       return config::makePath(name, terrain_config);
     });
-    input_sub_ = nh.subscribe("terrain_state", 10, &PurePursuitRos::onTerrainState, this);
     error_pub_ = nh.advertise<spherical_robots::TrackingError>("tracking_error", 10);
     target_pub_ = nh.advertise<geometry_msgs::PointStamped>("target", 10);
     desired_path_pub_ = nh.advertise<nav_msgs::Path>("desired_path", 1, true);
@@ -51,7 +51,9 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     ROS_INFO_STREAM("Tracking " << path_->describe() << " on " << surface_->describe() << " with a "
                                 << terrain::toString(type_) << " sphere, R = " << radius_ << " m");
   } else {
-    input_sub_ = nh.subscribe("cmd_vel", 10, &PurePursuitRos::onCmdVel, this);
+    teleop_mapping_ = std::make_unique<terrain::TeleopMapping>(
+        type_, radius_, terrain_config.tilt_limit, positiveParam(pnh, "teleop_tilt_gain", 2.0));
+    cmd_vel_sub_ = nh.subscribe("cmd_vel", 10, &PurePursuitRos::onCmdVel, this);
     ROS_INFO_STREAM("Teleoperating a " << terrain::toString(type_) << " sphere, R = " << radius_
                                        << " m, from " << input_.topic());
   }
@@ -68,23 +70,31 @@ void PurePursuitRos::onTerrainState(const spherical_robots::TerrainState& msg) {
                   terrain::toString(type_));
     return;
   }
+  const bool primary = mode_ == Mode::Tracking;
   try {
     geometry_ = conversions::contactGeometryFromMsg(msg);
-    input_.accept(ros::Time::now());
+    if (!std::isfinite(msg.phi)) throw std::invalid_argument("terrain_state phi is not finite");
+    tilt_ = msg.phi;
+    if (primary) input_.accept(ros::Time::now());
   } catch (const std::invalid_argument& e) {
-    input_.reject(e.what());
+    if (primary) input_.reject(e.what());
+    ROS_WARN_STREAM_THROTTLE(1.0, "Ignoring terrain_state: " << e.what());
   }
 }
 
 void PurePursuitRos::onCmdVel(const geometry_msgs::Twist& msg) {
   try {
-    teleop_ = conversions::ratesFromTwist(type_, msg, radius_);
+    const conversions::PlanarTwist twist = conversions::planarTwist(msg);
+    request_ = twist.request;
     input_.accept(ros::Time::now());
+    warnIgnoredOnce(twist.ignored);
   } catch (const std::invalid_argument& e) {
     input_.reject(e.what());
-    return;
   }
-  for (const std::string& field : teleop_.ignored) {
+}
+
+void PurePursuitRos::warnIgnoredOnce(const std::vector<std::string>& fields) {
+  for (const std::string& field : fields) {
     if (warned_ignored_.insert(field).second) {
       ROS_WARN_STREAM("A " << terrain::toString(type_) << " sphere cannot follow cmd_vel " << field
                            << "; ignoring it (warned once)");
@@ -94,7 +104,6 @@ void PurePursuitRos::onCmdVel(const geometry_msgs::Twist& msg) {
 
 void PurePursuitRos::onTimer(const ros::TimerEvent&) {
   const ros::Time now = ros::Time::now();
-  if (start_.isZero()) start_ = now;
   try {
     command_ = mode_ == Mode::Tracking ? track(now) : teleop(now);
   } catch (const std::exception& e) {
@@ -110,6 +119,7 @@ void PurePursuitRos::onTimer(const ros::TimerEvent&) {
 
 terrain::DriveRates PurePursuitRos::track(const ros::Time& now) {
   if (!geometry_ || !input_.fresh(now)) return {};
+  if (start_.isZero()) start_ = now;
   const terrain::DesiredPoint desired =
       terrain::liftOntoSurface(*path_, *surface_, (now - start_).toSec());
   error_ = terrain::trackingError(*geometry_, desired.position);
@@ -122,8 +132,16 @@ terrain::DriveRates PurePursuitRos::track(const ros::Time& now) {
   return controller_->command(error_, desired.velocity);
 }
 
-terrain::DriveRates PurePursuitRos::teleop(const ros::Time& now) const {
-  return input_.fresh(now) ? teleop_.rates : terrain::DriveRates{};
+terrain::DriveRates PurePursuitRos::teleop(const ros::Time& now) {
+  if (!input_.fresh(now)) return {};
+  const terrain::TeleopCommand command = teleop_mapping_->command(request_, tilt_);
+  // Named as cmd_vel fields, which is what the operator sends.
+  std::vector<std::string> fields;
+  for (const std::string& ignored : command.ignored) {
+    fields.emplace_back(ignored == "leftward" ? "linear.y" : "angular.z");
+  }
+  warnIgnoredOnce(fields);
+  return command.rates;
 }
 
 void PurePursuitRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

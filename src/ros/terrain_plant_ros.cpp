@@ -111,14 +111,11 @@ void TerrainPlantRos::tick(const ros::Time& now) {
 }
 
 void TerrainPlantRos::integrate(double elapsed, const terrain::DriveRates& rates) {
-  const int steps = std::max(1, static_cast<int>(std::ceil(elapsed / step_ - 1e-9)));
-  const double dt = elapsed / steps;
   try {
-    for (int i = 0; i < steps; ++i) {
-      const Eigen::Vector3d omega = kinematics_->shellAngularVelocity(state_, rates);
-      state_ = terrain::stepWithHeldRates(*kinematics_, state_, rates, dt);
-      orientation_ = terrain::advanceOrientation(orientation_, omega, dt);
-    }
+    const terrain::RollingState next =
+        terrain::advanceWithHeldRates(*kinematics_, {state_, orientation_}, rates, elapsed, step_);
+    state_ = next.state;
+    orientation_ = next.orientation;
   } catch (const std::exception& e) {
     ++integration_failures_;
     ROS_ERROR_STREAM_THROTTLE(1.0, "Integration failed (" << integration_failures_

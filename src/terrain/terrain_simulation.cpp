@@ -1,6 +1,7 @@
 #include "spherical_robots/terrain/terrain_simulation.hpp"
 
 #include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -97,6 +98,23 @@ TerrainState stepWithHeldRates(const TerrainKinematics& kinematics, const Terrai
   OdeState x = toOde(state);
   Stepper().do_step(open_loop, x, 0.0, dt);
   return checkedResult(kinematics, x, dt);
+}
+
+RollingState advanceWithHeldRates(const TerrainKinematics& kinematics, const RollingState& start,
+                                  const DriveRates& rates, double elapsed, double max_step) {
+  requireStep(elapsed);
+  requireStep(max_step);
+  const int steps = std::max(1, static_cast<int>(std::ceil(elapsed / max_step - 1e-9)));
+  const double dt = elapsed / steps;
+  RollingState result = start;
+  Eigen::Vector3d omega = kinematics.shellAngularVelocity(result.state, rates);
+  for (int i = 0; i < steps; ++i) {
+    result.state = stepWithHeldRates(kinematics, result.state, rates, dt);
+    const Eigen::Vector3d omega_end = kinematics.shellAngularVelocity(result.state, rates);
+    result.orientation = advanceOrientation(result.orientation, 0.5 * (omega + omega_end), dt);
+    omega = omega_end;
+  }
+  return result;
 }
 
 Eigen::Quaterniond advanceOrientation(const Eigen::Quaterniond& orientation,

@@ -22,6 +22,7 @@
 
 #include "spherical_robots/TerrainState.h"
 #include "spherical_robots/TrackingError.h"
+#include "spherical_robots/terrain/teleop.hpp"
 #include "spherical_robots/terrain/pure_pursuit.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/robot_type.hpp"
@@ -70,18 +71,15 @@ terrain::DriveRates ratesFromJointState(terrain::RobotType type, const sensor_ms
 sensor_msgs::JointState jointStateFromRates(terrain::RobotType type, const terrain::DriveRates& rates,
                                             const ros::Time& stamp);
 
-/// Teleoperation: a body twist mapped to drive rates of a sphere of radius R [m].
-struct TeleopRates {
-  terrain::DriveRates rates;
-  std::vector<std::string> ignored;  ///< non-zero twist fields the type cannot follow
+/// The planar part of a body twist: linear.x forward, linear.y leftward [m/s], angular.z yaw
+/// rate [rad/s] (REP 103), for terrain::TeleopMapping.
+struct PlanarTwist {
+  terrain::VelocityRequest request;
+  std::vector<std::string> ignored;  ///< non-zero fields no rolling sphere can follow
 };
 
-/// linear.x = v -> roll rate v / R (RS: alpha_dot); linear.y = v_y -> lateral rate -v_y / R (3R, 2R;
-/// the centre moves with -R phi_dot l); angular.z -> turn rate (3R, RT). RS steers by tilting:
-/// angular.z -> tilt rate phi_dot = -angular.z [rad/s], which turns it the same way (phi < 0
-/// turns left, eq 44). Every other non-zero field is listed in `ignored`.
-/// @throw std::invalid_argument on a non-finite field or radius <= 0.
-TeleopRates ratesFromTwist(terrain::RobotType type, const geometry_msgs::Twist& twist, double radius);
+/// @throw std::invalid_argument on a non-finite field.
+PlanarTwist planarTwist(const geometry_msgs::Twist& twist);
 
 // --- Terrain state and tracking ----------------------------------------------------------------
 

@@ -26,10 +26,12 @@ namespace spherical_robots {
 /// (config/terrain.yaml: surface, paths, gains).
 ///
 /// tracking: subscribes terrain_state; every 1/rate s of ROS time it commands the
-/// PurePursuitController towards liftOntoSurface(path, surface, t), t = ROS time since its first
-/// tick, and publishes tracking_error, target and (latched, once) desired_path.
-/// teleop: subscribes cmd_vel (geometry_msgs/Twist), mapped by conversions::ratesFromTwist; what
-/// the robot type cannot follow is ignored with one warning per field.
+/// PurePursuitController towards liftOntoSurface(path, surface, t), t = ROS time since the first
+/// fresh terrain_state (so the reference waits for the plant), and publishes tracking_error,
+/// target and (latched, once) desired_path.
+/// teleop: subscribes cmd_vel (geometry_msgs/Twist), mapped by terrain::TeleopMapping (RS servos
+/// its tilt, read from terrain_state, with ~teleop_tilt_gain [1/s], default 2); what the robot
+/// type cannot follow is ignored with one warning per field.
 /// Both publish actuators/command (sensor_msgs/JointState set-points) and /diagnostics.
 class PurePursuitRos {
  public:
@@ -46,7 +48,9 @@ class PurePursuitRos {
   /// The set-points in tracking mode; zero without a fresh terrain_state.
   terrain::DriveRates track(const ros::Time& now);
   /// The set-points in teleop mode; zero without a fresh cmd_vel.
-  terrain::DriveRates teleop(const ros::Time& now) const;
+  terrain::DriveRates teleop(const ros::Time& now);
+  /// Logs once per field that cmd_vel asks for something this robot cannot do.
+  void warnIgnoredOnce(const std::vector<std::string>& fields);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   terrain::RobotType type_;
@@ -57,7 +61,9 @@ class PurePursuitRos {
   std::unique_ptr<terrain::PurePursuitController> controller_;
 
   std::optional<terrain::ContactGeometry> geometry_;  ///< from the last good terrain_state
-  conversions::TeleopRates teleop_;                   ///< from the last good cmd_vel
+  double tilt_ = 0.0;                                 ///< RS phi from the last good terrain_state
+  terrain::VelocityRequest request_;                  ///< from the last good cmd_vel
+  std::unique_ptr<terrain::TeleopMapping> teleop_mapping_;
   std::set<std::string> warned_ignored_;
   terrain::DriveRates command_;
   terrain::TrackingError error_;
@@ -65,7 +71,8 @@ class PurePursuitRos {
   ros::Time start_;
 
   InputMonitor input_;  ///< terrain_state (tracking) or cmd_vel (teleop)
-  ros::Subscriber input_sub_;
+  ros::Subscriber state_sub_;
+  ros::Subscriber cmd_vel_sub_;
   ros::Publisher command_pub_;
   ros::Publisher error_pub_;
   ros::Publisher target_pub_;

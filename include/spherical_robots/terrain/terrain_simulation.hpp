@@ -65,6 +65,19 @@ TerrainState stepWithHeldRates(const TerrainKinematics& kinematics, const Terrai
 Eigen::Quaterniond advanceOrientation(const Eigen::Quaterniond& orientation,
                                       const Eigen::Vector3d& omega, double dt);
 
+/// A plant's whole state: the configuration and the shell's orientation (world <- shell).
+struct RollingState {
+  TerrainState state;
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+};
+
+/// Advances by elapsed [s] > 0 with the rates held, in equal RK4 sub-steps no longer than
+/// max_step [s] > 0; the shell turns by the mean of its angular velocities at each sub-step's ends
+/// (second order, like the state). @throw std::invalid_argument on bad times or input,
+/// std::runtime_error if the state stops being finite.
+RollingState advanceWithHeldRates(const TerrainKinematics& kinematics, const RollingState& start,
+                                  const DriveRates& rates, double elapsed, double max_step);
+
 /// The tracking figures the paper reports: time of the first |e_t| below a threshold, and the
 /// mean and max of |e_t| from a settling time on.
 class TrackingSummary {
