@@ -9,11 +9,11 @@ packages=(
   python3-colcon-defaults python3-colcon-pkg-config python3-colcon-package-selection
   python3-catkin-pkg ros-message-generation ros-message-runtime
   # ROS libraries and messages
-  ros-base-dev libtf2-ros-dev libtf2-eigen-dev libtf2-geometry-msgs-dev libtf2-msgs-dev
+  ros-base-dev libtf2-ros-dev libtf2-msgs-dev
   libnav-msgs-dev libvisualization-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev
-  libdiagnostic-msgs-dev libstd-msgs-dev libdiagnostic-updater-dev liburdf-dev
-  # core libraries
-  libeigen3-dev libboost-dev libyaml-cpp-dev
+  libdiagnostic-msgs-dev libstd-msgs-dev libdiagnostic-updater-dev
+  # core libraries (liburdfdom-dev: urdf_parser/urdf_parser.h, linked directly; no ROS urdf)
+  libeigen3-dev liburdfdom-dev libboost-dev libyaml-cpp-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev googletest libbenchmark-dev librostest-dev python3-rostest
   # running stacks, bags, plots, rviz
