@@ -1,7 +1,5 @@
 #include "spherical_robots/config/robot_description.hpp"
 
-#include <unistd.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -63,7 +61,7 @@ std::string packageShareDirectory() {
       if (has_config(candidate)) return candidate.string();
     }
   }
-  for (const fs::path candidate :
+  for (const fs::path& candidate :
        {fs::path(SPHERICAL_ROBOTS_INSTALLED_SHARE_DIR), fs::path(SPHERICAL_ROBOTS_SOURCE_DIR)}) {
     if (has_config(candidate)) return candidate.string();
   }
