@@ -56,7 +56,9 @@ hardware::SimulatedActuators makeActuators(const ros::NodeHandle& pnh) {
 }  // namespace
 
 HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHandle pnh)
-    : actuators_(makeActuators(pnh)), updater_(nh, pnh) {
+    : actuators_(makeActuators(pnh)),
+      command_input_(nh.resolveName("actuators/command"), actuators_.commandTimeout()),
+      updater_(nh, pnh) {
   const double rate = positiveParam(pnh, "rate", 100.0);
   state_msg_.name = actuators_.names();
 
@@ -80,17 +82,14 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
 
 void HardwareInterfaceSimRos::commandCallback(const sensor_msgs::JointState::ConstPtr& msg) {
   // The watchdog counts from arrival, not from header.stamp: many publishers leave it zero.
-  const std::string reason = actuators_.command(msg->name, msg->velocity, ros::Time::now().toSec());
+  const ros::Time now = ros::Time::now();
+  const std::string reason = actuators_.command(msg->name, msg->velocity, now.toSec());
   if (reason.empty()) {
-    ++accepted_commands_;
+    command_input_.accept(now);
     reported_timeout_ = false;
-    return;
+  } else {
+    command_input_.reject(reason);  // the actuators keep the last good set-points
   }
-  ++rejected_commands_;
-  last_rejection_ = reason;
-  ROS_WARN_THROTTLE(1.0, "hardware_interface_sim: command on %s rejected (%s); keeping the last "
-                    "good set-points (%lu rejected so far)",
-                    command_sub_.getTopic().c_str(), reason.c_str(), rejected_commands_);
 }
 
 void HardwareInterfaceSimRos::eStopCallback(const std_msgs::Bool::ConstPtr& msg) {
@@ -135,9 +134,12 @@ void HardwareInterfaceSimRos::diagnose(diagnostic_updater::DiagnosticStatusWrapp
     status.summary(DiagnosticStatus::OK, "waiting for the first command");
   else
     status.summary(DiagnosticStatus::OK, "following commands");
-  status.add("accepted commands", accepted_commands_);
-  status.add("rejected commands", rejected_commands_);
-  status.add("last rejection", last_rejection_.empty() ? std::string("none") : last_rejection_);
+  // Not command_input_.report(): its key names and its WARN before the first command and on
+  // rejections are not this node's (docs/hardware_interface.md); the watchdog decides staleness.
+  status.add("accepted commands", command_input_.accepted());
+  status.add("rejected commands", command_input_.rejected());
+  const std::string& reason = command_input_.lastReason();
+  status.add("last rejection", reason.empty() ? std::string("none") : reason);
   status.add("command timeout [s]", actuators_.commandTimeout());
   for (std::size_t i = 0; i < actuators_.names().size(); ++i)
     status.addf(actuators_.names()[i] + " set-point, velocity [rad/s]", "%.6g, %.6g",

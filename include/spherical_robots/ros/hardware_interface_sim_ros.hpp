@@ -3,14 +3,13 @@
 // in docs/hardware_interface.md. Parameters in, set-points in, measured states and diagnostics
 // out; every rule about limits, the watchdog and the e-stop lives in the core class.
 
-#include <string>
-
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/Bool.h>
 
 #include "spherical_robots/hardware/simulated_actuators.hpp"
+#include "spherical_robots/ros/input_monitor.hpp"
 
 namespace spherical_robots {
 
@@ -36,10 +35,9 @@ class HardwareInterfaceSimRos {
   ros::Subscriber command_sub_;
   ros::Subscriber e_stop_sub_;
   ros::Timer timer_;
+  /// Counts accepted and rejected commands and logs rejections; the watchdog is the actuators'.
+  InputMonitor command_input_;
   diagnostic_updater::Updater updater_;
-  unsigned long accepted_commands_ = 0;
-  unsigned long rejected_commands_ = 0;
-  std::string last_rejection_;
   bool reported_timeout_ = false;
 };
 

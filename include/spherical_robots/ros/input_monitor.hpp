@@ -30,6 +30,11 @@ class InputMonitor {
   void report(diagnostic_updater::DiagnosticStatusWrapper& status, const ros::Time& now);
 
   const std::string& topic() const { return topic_; }
+  /// The figures report() adds, for a node that reports them under its own names and levels.
+  unsigned long accepted() const { return accepted_; }
+  unsigned long rejected() const { return rejected_; }
+  /// The reason given with the last rejected message; empty before the first one.
+  const std::string& lastReason() const { return last_reason_; }
 
  private:
   std::string topic_;
