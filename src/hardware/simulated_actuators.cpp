@@ -1,5 +1,7 @@
 #include "spherical_robots/hardware/simulated_actuators.hpp"
 
+#include "spherical_robots/core/validation.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -17,13 +19,6 @@ std::string joined(const std::vector<std::string>& names) {
   return out;
 }
 
-void requirePositiveFinite(double value, const std::string& what) {
-  if (!std::isfinite(value) || value <= 0.0) {
-    std::ostringstream msg;
-    msg << "SimulatedActuators: " << what << " must be finite and > 0, got " << value;
-    throw std::invalid_argument(msg.str());
-  }
-}
 
 }  // namespace
 
@@ -45,11 +40,12 @@ SimulatedActuators::SimulatedActuators(std::vector<std::string> names,
     if (!seen.insert(names_[i]).second)
       throw std::invalid_argument("SimulatedActuators: actuator name '" + names_[i] +
                                   "' appears twice");
-    requirePositiveFinite(limits_[i].max_velocity, "max_velocity of '" + names_[i] + "' [rad/s]");
-    requirePositiveFinite(limits_[i].max_acceleration,
-                          "max_acceleration of '" + names_[i] + "' [rad/s^2]");
+    const std::string of = " of '" + names_[i] + "'";
+    requirePositive(limits_[i].max_velocity, "SimulatedActuators: max_velocity" + of + " [rad/s]");
+    requirePositive(limits_[i].max_acceleration,
+                    "SimulatedActuators: max_acceleration" + of + " [rad/s^2]");
   }
-  requirePositiveFinite(command_timeout_, "command_timeout [s]");
+  requirePositive(command_timeout_, "SimulatedActuators: command_timeout [s]");
   setpoints_.assign(names_.size(), 0.0);
   velocities_.assign(names_.size(), 0.0);
   positions_.assign(names_.size(), 0.0);

@@ -1,4 +1,5 @@
 #include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/core/validation.hpp"
 
 #include <algorithm>
 #include <array>
@@ -19,14 +20,6 @@ double& rateAt(terrain::DriveRates& rates, std::size_t i) {
 
 double rateAt(const terrain::DriveRates& rates, std::size_t i) {
   return std::array<double, 3>{rates.roll_rate, rates.lateral_rate, rates.turn_rate}.at(i);
-}
-
-void requireFinite(double value, const std::string& field) {
-  if (!std::isfinite(value)) {
-    std::ostringstream what;
-    what << field << " = " << value << " is not finite";
-    throw std::invalid_argument(what.str());
-  }
 }
 
 void requireUnit(const Eigen::Vector3d& v, const std::string& field) {

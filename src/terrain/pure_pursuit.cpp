@@ -1,4 +1,5 @@
 #include "spherical_robots/terrain/pure_pursuit.hpp"
+#include "spherical_robots/core/validation.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -50,10 +51,7 @@ PurePursuitController::PurePursuitController(RobotType type, const PursuitGains&
                                              double radius)
     : type_(type), gains_(gains), radius_(radius) {
   validate(gains);
-  if (!std::isfinite(radius) || radius <= 0.0) {
-    throw std::invalid_argument("pure pursuit: radius must be finite and > 0 m, got " +
-                                std::to_string(radius));
-  }
+  requirePositive(radius, "pure pursuit: radius [m]");
 }
 
 DriveRates PurePursuitController::command(const TrackingError& error,

@@ -1,4 +1,5 @@
 #include "spherical_robots/terrain/reference_path.hpp"
+#include "spherical_robots/core/validation.hpp"
 
 #include <algorithm>
 #include <array>
@@ -9,23 +10,13 @@
 namespace spherical_robots::terrain {
 namespace {
 
-void requirePositive(double value, const char* name, const char* path) {
-  if (!std::isfinite(value) || value <= 0.0) {
-    std::ostringstream message;
-    message << path << " path: " << name << " must be finite and > 0, got " << value;
-    throw std::invalid_argument(message.str());
-  }
-}
-
-void requireFiniteTime(double t) {
-  if (!std::isfinite(t)) throw std::invalid_argument("reference path: time is not finite");
-}
+void requireFiniteTime(double t) { requireFinite(t, "reference path: time [s]"); }
 
 }  // namespace
 
 CirclePath::CirclePath(double radius, double angular_rate)
     : radius_(radius), angular_rate_(angular_rate) {
-  requirePositive(radius, "radius", "circle");
+  requirePositive(radius, "circle path: radius [m]");
   if (!std::isfinite(angular_rate) || angular_rate == 0.0) {
     throw std::invalid_argument("circle path: angular_rate must be finite and non-zero, got " +
                                 std::to_string(angular_rate));
@@ -54,8 +45,8 @@ std::string CirclePath::describe() const {
 
 DiamondPath::DiamondPath(double half_diagonal, double speed)
     : half_diagonal_(half_diagonal), speed_(speed) {
-  requirePositive(half_diagonal, "half_diagonal", "diamond");
-  requirePositive(speed, "speed", "diamond");
+  requirePositive(half_diagonal, "diamond path: half_diagonal [m]");
+  requirePositive(speed, "diamond path: speed [m/s]");
 }
 
 namespace {

@@ -1,31 +1,17 @@
 #include "spherical_robots/terrain/surface.hpp"
+#include "spherical_robots/core/validation.hpp"
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 namespace spherical_robots::terrain {
-namespace {
-
-void requireFinite(double value, const char* name, const char* surface) {
-  if (!std::isfinite(value)) {
-    std::ostringstream message;
-    message << surface << ": " << name << " must be finite, got " << value;
-    throw std::invalid_argument(message.str());
-  }
-}
-
-}  // namespace
-
 CosineSurface::CosineSurface(double amplitude, double frequency)
     : amplitude_(amplitude), frequency_(frequency) {
-  requireFinite(amplitude, "amplitude", "cosine surface");
-  requireFinite(frequency, "frequency", "cosine surface");
-  if (frequency <= 0.0) {
-    throw std::invalid_argument("cosine surface: frequency must be > 0 rad/m, got " +
-                                std::to_string(frequency));
-  }
+  requireFinite(amplitude, "cosine surface: amplitude [m]");
+  requirePositive(frequency, "cosine surface: frequency [rad/m]");
 }
 
 // Eq 59 and its derivatives.
@@ -56,9 +42,9 @@ std::string CosineSurface::describe() const {
 
 PlaneSurface::PlaneSurface(double slope_x, double slope_y, double offset)
     : slope_(slope_x, slope_y), offset_(offset) {
-  requireFinite(slope_x, "slope_x", "plane");
-  requireFinite(slope_y, "slope_y", "plane");
-  requireFinite(offset, "offset", "plane");
+  requireFinite(slope_x, "plane: slope_x");
+  requireFinite(slope_y, "plane: slope_y");
+  requireFinite(offset, "plane: offset [m]");
 }
 
 SurfacePoint PlaneSurface::evaluate(double x, double y) const {
@@ -82,16 +68,18 @@ Eigen::Vector2d principalCurvatures(const Surface& surface, double x, double y) 
   const double w = std::sqrt(1.0 + g.squaredNorm());
   const Eigen::Matrix2d first_form = Eigen::Matrix2d::Identity() + g * g.transpose();
   const Eigen::Matrix2d second_form = point.hessian / w;
-  // I^-1 II is self-adjoint with respect to I: solve the generalized symmetric problem.
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> solver(second_form, first_form);
-  return solver.eigenvalues();  // ascending
+  // The eigenvalues of the shape operator S = I^-1 II, H -+ sqrt(H^2 - K), with the discriminant
+  // written from S's entries, ((s00 - s11) / 2)^2 + s01 s10, which does not cancel at umbilics.
+  const Eigen::Matrix2d shape = first_form.inverse() * second_form;
+  const double mean = 0.5 * shape.trace();
+  const double half_difference = 0.5 * (shape(0, 0) - shape(1, 1));
+  const double spread =
+      std::sqrt(std::max(0.0, half_difference * half_difference + shape(0, 1) * shape(1, 0)));
+  return {mean - spread, mean + spread};
 }
 
 void requireSinglePointContact(const Surface& surface, double radius) {
-  if (!std::isfinite(radius) || radius <= 0.0) {
-    throw std::invalid_argument("sphere radius must be finite and > 0 m, got " +
-                                std::to_string(radius));
-  }
+  requirePositive(radius, "sphere radius [m]");
   const double curvature = surface.maxPrincipalCurvature();
   if (radius * curvature >= 1.0) {
     std::ostringstream message;

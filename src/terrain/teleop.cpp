@@ -1,4 +1,5 @@
 #include "spherical_robots/terrain/teleop.hpp"
+#include "spherical_robots/core/validation.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,15 +11,12 @@ namespace spherical_robots::terrain {
 
 TeleopMapping::TeleopMapping(RobotType type, double radius, double tilt_limit, double tilt_gain)
     : type_(type), radius_(radius), tilt_limit_(tilt_limit), tilt_gain_(tilt_gain) {
-  std::ostringstream problem;
-  if (!std::isfinite(radius) || radius <= 0.0) {
-    problem << "teleop: radius must be finite and > 0 m, got " << radius;
-  } else if (!std::isfinite(tilt_limit) || tilt_limit <= 0.0 || tilt_limit >= M_PI / 2.0) {
-    problem << "teleop: tilt limit must be in (0, pi/2) rad, got " << tilt_limit;
-  } else if (!std::isfinite(tilt_gain) || tilt_gain <= 0.0) {
-    problem << "teleop: tilt gain must be finite and > 0 1/s, got " << tilt_gain;
+  requirePositive(radius, "teleop: radius [m]");
+  requirePositive(tilt_gain, "teleop: tilt gain [1/s]");
+  if (!(tilt_limit > 0.0 && tilt_limit < M_PI / 2.0)) {
+    throw std::invalid_argument("teleop: tilt limit must be in (0, pi/2) rad, got " +
+                                std::to_string(tilt_limit));
   }
-  if (!problem.str().empty()) throw std::invalid_argument(problem.str());
 }
 
 TeleopCommand TeleopMapping::command(const VelocityRequest& request, double tilt) const {

@@ -1,4 +1,5 @@
 #include "spherical_robots/terrain/terrain_simulation.hpp"
+#include "spherical_robots/core/validation.hpp"
 
 #include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
 #include <algorithm>
@@ -15,12 +16,6 @@ TerrainState fromOde(const OdeState& x) { return {x[0], x[1], x[2], x[3]}; }
 OdeState toOde(const TerrainState& s) { return {s.x, s.y, s.psi, s.phi}; }
 OdeState toOde(const TerrainStateRate& r) { return {r.x_dot, r.y_dot, r.psi_dot, r.phi_dot}; }
 
-void requireStep(double dt) {
-  if (!std::isfinite(dt) || dt <= 0.0) {
-    throw std::invalid_argument("integration step dt must be finite and > 0 s, got " +
-                                std::to_string(dt));
-  }
-}
 
 TerrainState checkedResult(const TerrainKinematics& kinematics, const OdeState& x, double t) {
   for (double value : x) {
@@ -71,7 +66,7 @@ const DesiredPoint& TerrainSimulation::desiredAt(double t) const {
 }
 
 void TerrainSimulation::step(double dt) {
-  requireStep(dt);
+  requirePositive(dt, "integration step dt [s]");
   // The controller runs inside the vector field, so it is evaluated at every RK stage.
   const auto closed_loop = [this](const OdeState& x, OdeState& dxdt, double t) {
     const TerrainState state = fromOde(x);
@@ -91,7 +86,7 @@ TerrainSample TerrainSimulation::sample() const { return evaluate(state_, t_); }
 
 TerrainState stepWithHeldRates(const TerrainKinematics& kinematics, const TerrainState& state,
                                const DriveRates& rates, double dt) {
-  requireStep(dt);
+  requirePositive(dt, "integration step dt [s]");
   const auto open_loop = [&kinematics, &rates](const OdeState& x, OdeState& dxdt, double) {
     dxdt = toOde(kinematics.stateRate(fromOde(x), rates));
   };
@@ -102,8 +97,8 @@ TerrainState stepWithHeldRates(const TerrainKinematics& kinematics, const Terrai
 
 RollingState advanceWithHeldRates(const TerrainKinematics& kinematics, const RollingState& start,
                                   const DriveRates& rates, double elapsed, double max_step) {
-  requireStep(elapsed);
-  requireStep(max_step);
+  requirePositive(elapsed, "elapsed time [s]");
+  requirePositive(max_step, "largest integration step [s]");
   const int steps = std::max(1, static_cast<int>(std::ceil(elapsed / max_step - 1e-9)));
   const double dt = elapsed / steps;
   RollingState result = start;
@@ -119,7 +114,7 @@ RollingState advanceWithHeldRates(const TerrainKinematics& kinematics, const Rol
 
 Eigen::Quaterniond advanceOrientation(const Eigen::Quaterniond& orientation,
                                       const Eigen::Vector3d& omega, double dt) {
-  requireStep(dt);
+  requirePositive(dt, "orientation step dt [s]");
   if (!omega.allFinite()) throw std::invalid_argument("angular velocity is not finite");
   const double angle = omega.norm() * dt;
   if (angle == 0.0) return orientation;
