@@ -7,7 +7,7 @@
 namespace spherical_robots {
 namespace {
 
-[[noreturn]] void reject(double value, const std::string& what, const char* requirement) {
+[[noreturn]] void reject(double value, std::string_view what, const char* requirement) {
   std::ostringstream message;
   message << what << " must be " << requirement << ", got " << value;
   throw std::invalid_argument(message.str());
@@ -15,11 +15,11 @@ namespace {
 
 }  // namespace
 
-void requireFinite(double value, const std::string& what) {
+void requireFinite(double value, std::string_view what) {
   if (!std::isfinite(value)) reject(value, what, "finite");
 }
 
-void requirePositive(double value, const std::string& what) {
+void requirePositive(double value, std::string_view what) {
   if (!std::isfinite(value) || value <= 0.0) reject(value, what, "finite and > 0");
 }
 

@@ -93,9 +93,10 @@ std::string DiamondPath::describe() const {
 DesiredPoint liftOntoSurface(const ReferencePath& path, const Surface& surface, double t) {
   const Eigen::Vector2d xy = path.position(t);
   const Eigen::Vector2d xy_rate = path.velocity(t);
+  const SurfacePoint ground = surface.evaluate(xy.x(), xy.y());
   DesiredPoint desired;
-  desired.position = {xy.x(), xy.y(), surface.height(xy.x(), xy.y())};
-  desired.velocity = {xy_rate.x(), xy_rate.y(), surface.gradient(xy.x(), xy.y()).dot(xy_rate)};
+  desired.position = {xy.x(), xy.y(), ground.height};
+  desired.velocity = {xy_rate.x(), xy_rate.y(), ground.gradient.dot(xy_rate)};
   return desired;
 }
 
