@@ -1,0 +1,298 @@
+#!/usr/bin/env python3
+"""rostest of launch/replay.launch: rviz under Xvfb shows a replayed terrain bag (test/replay_rviz.test).
+
+The bag (test/data/terrain_3R_circle_fixture.bag) plays in a loop at ~rate x. Checks:
+  1. /sphere/rviz subscribes to every topic rviz/terrain.rviz names (tf, tf_static, terrain_marker,
+     desired_path, trail, target): only the config names these, so the config was loaded;
+  2. a screenshot (`import -window root`) taken in the second half of a pass, in its 3D panel:
+     not blank (the terrain's colours cover a good part of it), the desired path's colour and the
+     driven trail's colour from rviz/terrain.rviz, and the robot's colours (the translucent shell
+     of urdf/terrain_robot.urdf over the terrain, or its band seen through it) inside the disc where
+     /tf puts the robot's base_link, and far fewer in control discs of the same size elsewhere;
+  3. rviz is rendering live: a second screenshot differs from the first;
+  4. after the bag loops (simulated time jumps back to its start), the same screenshot checks pass
+     again: rviz cleared its tf buffer and redrew from the replayed messages, no stale tf;
+  5. no ERROR from rviz on /rosout (rostest runs no rosout node, hence no /rosout_agg; what rviz
+     logs before this node subscribes, in its first second, is not seen). The jump's "Detected
+     jump back in time ... Clearing TF buffer" WARN is expected and counted.
+The robot is located by projecting its tf position with the Orbit camera of rviz/terrain.rviz
+(distance, yaw, pitch, focal point, vertical field of view) onto the 3D panel, which is found as
+the bounding box of the background colour. Screenshots are saved in $ROS_HOME (printed).
+Deadlines are wall-clock and generous (slow CI); a pass of the bag is about 12 s of wall time.
+"""
+import math
+import os
+import subprocess
+import threading
+import time
+import unittest
+
+import numpy as np
+import rosgraph
+import rosgraph.names
+import rospy
+import rostest
+import yaml
+from rosgraph_msgs.msg import Clock
+from rosgraph_msgs.msg import Log
+from tf2_msgs.msg import TFMessage
+
+PKG = 'spherical_robots'
+NAME = 'replay_rviz_check'
+RVIZ = '/sphere/rviz'
+ROBOT_FRAME = 'sphere/base_link'
+RADIUS = 0.2                # [m] base_link sphere of urdf/terrain_robot.urdf
+STARTUP_DEADLINE = 90.0     # [s] wall: rviz up and subscribed
+PASS_DEADLINE = 90.0        # [s] wall: reaching a given point of a pass of the bag
+SHOT_WINDOW = (12.0, 22.0)  # [s] bag time: trail long enough, robot converged, before the end
+# Colour classes [RGB 0-255] found in the 3D panel (measured counts in the test's log):
+MIN_PATH_PIXELS = 300       # Desired path, 25;255;0, a 0.02 m line around a 2 m circle (~900 px)
+MIN_TRAIL_PIXELS = 80       # Driven trail, 255;220;0, 0.03 m line, 12+ s of it (~270 px)
+MIN_TERRAIN_FRACTION = 0.2  # the terrain mesh fills about half of the panel
+MIN_ROBOT_PIXELS = 40       # robot-coloured pixels in its disc (~15 px radius, 640 px; 50-400)
+MIN_CHANGED_PIXELS = 200    # between two shots 1 s apart
+
+
+def wait_until(condition, what, timeout):
+    deadline = time.time() + timeout
+    while not condition():
+        if time.time() > deadline or rospy.is_shutdown():
+            raise AssertionError('timed out after %.0f s (wall) waiting for %s' % (timeout, what))
+        time.sleep(0.05)
+
+
+def rviz_config():
+    with open(rospy.get_param('~rviz_config')) as f:
+        return yaml.safe_load(f)
+
+
+def grab_screen():
+    """The X root window as an H x W x 3 int array, via ImageMagick's import (PPM)."""
+    data = subprocess.run(['import', '-window', 'root', '-depth', '8', 'ppm:-'], check=True,
+                          capture_output=True, timeout=30).stdout
+    magic, size, maxval, pixels = data.split(b'\n', 3)
+    if magic != b'P6' or maxval != b'255':
+        raise AssertionError('unexpected screenshot format %r %r' % (magic, maxval))
+    width, height = map(int, size.split())
+    return np.frombuffer(pixels[:width * height * 3], np.uint8).reshape(height, width, 3), data
+
+
+class OrbitCamera:
+    """rviz's Orbit view (OrbitViewController): the eye sits at `distance` from the focal point at
+    (yaw, pitch), looks at it with world z up; perspective with a vertical field of view."""
+
+    def __init__(self, view):
+        self.focal = np.array([view['Focal Point'][k] for k in ('X', 'Y', 'Z')], float)
+        yaw, pitch, distance = view['Yaw'], view['Pitch'], view['Distance']
+        self.eye = self.focal + distance * np.array(
+            [math.cos(yaw) * math.cos(pitch), math.sin(yaw) * math.cos(pitch), math.sin(pitch)])
+        self.forward = (self.focal - self.eye) / np.linalg.norm(self.focal - self.eye)
+        right = np.cross(self.forward, [0.0, 0.0, 1.0])
+        self.right = right / np.linalg.norm(right)
+        self.up = np.cross(self.right, self.forward)
+        self.tan_half_fov = math.tan(view['Field of View'] / 2.0)
+
+    def project(self, point, panel):
+        """Pixel (column, row) of a world point in the panel (top, bottom, left, right)."""
+        top, bottom, left, right = panel
+        width, height = right - left + 1, bottom - top + 1
+        v = np.asarray(point, float) - self.eye
+        depth = v @ self.forward
+        x = (v @ self.right) / (depth * self.tan_half_fov * width / height)
+        y = (v @ self.up) / (depth * self.tan_half_fov)
+        return left + (x + 1.0) / 2.0 * width, top + (1.0 - y) / 2.0 * height
+
+
+def find_panel(image, background):
+    """The 3D panel: bounding box of the rows and columns with many background-coloured pixels
+    (the Displays panel's small colour swatch has the same colour but few pixels)."""
+    bg = np.all(image == np.array(background, np.uint8), axis=2)
+    rows = np.nonzero(bg.sum(axis=1) >= 40)[0]
+    cols = np.nonzero(bg.sum(axis=0) >= 40)[0]
+    if len(rows) == 0 or len(cols) == 0:
+        return None
+    return rows.min(), rows.max(), cols.min(), cols.max()
+
+
+def colour_classes(p):
+    """Boolean masks over an H x W x 3 int array."""
+    r, g, b = p[..., 0], p[..., 1], p[..., 2]
+    path = (g > 200) & (r < 100) & (b < 60)                                   # 25;255;0
+    trail = (r > 200) & (g > 170) & (g < 240) & (b < 50) & (r - g > 15)       # 255;220;0
+    # eq 59 terrain mesh (conversions::surfaceMesh): green to yellow, never r > g + 10 or b > g
+    terrain = (g >= r - 10) & (g > b + 15) & ~path & ~trail
+    return path, trail, terrain
+
+
+def robot_pixels(image, centre, radius):
+    """Robot-coloured pixels in the disc of `radius` px around `centre`, judged against the mean of
+    a ring around it (the terrain there): the translucent blue shell raises blue over red
+    (b - r up by > 25), its orange band seen through it is orange (r > g + 20, g > b + 15, and not
+    the trail's yellow). The terrain alone is neither."""
+    cx, cy = centre
+    h, w = image.shape[:2]
+    reach = int(radius * 2.6) + 2
+    y0, y1 = max(0, int(cy) - reach), min(h, int(cy) + reach + 1)
+    x0, x1 = max(0, int(cx) - reach), min(w, int(cx) + reach + 1)
+    patch = image[y0:y1, x0:x1].astype(int)
+    yy, xx = np.mgrid[y0:y1, x0:x1]
+    d = np.hypot(xx - cx, yy - cy)
+    disc, ring = d <= radius, (d > 1.6 * radius) & (d < 2.6 * radius)
+    if disc.sum() == 0 or ring.sum() == 0:
+        return 0
+    inside = patch[disc]
+    diff = inside - patch[ring].mean(axis=0)
+    shell = (diff[:, 2] - diff[:, 0]) > 25
+    r, g, b = inside[:, 0], inside[:, 1], inside[:, 2]
+    band = (r > g + 20) & (g > b + 15) & ~((b < 50) & (g > 170))
+    return int((shell | band).sum())
+
+
+class ReplayRvizCheck(unittest.TestCase):
+
+    @classmethod
+    def setUpClass(cls):
+        cls.lock = threading.Lock()
+        cls.robot = None         # latest world -> base_link translation
+        cls.clock = None
+        cls.jumps = 0            # times simulated time went back (bag loops)
+        cls.rviz_errors = []
+        cls.rviz_warnings = []
+        config = rviz_config()
+        cls.background = [int(c) for c in
+                          config['Visualization Manager']['Global Options']['Background Color'].split(';')]
+        cls.camera = OrbitCamera(config['Visualization Manager']['Views']['Current'])
+        cls.topics = sorted(
+            rosgraph.names.ns_join('/sphere', d[key])
+            for d in config['Visualization Manager']['Displays']
+            for key in ('Topic', 'Marker Topic') if key in d and d.get('Enabled', True))
+        cls.shot_dir = os.environ.get('ROS_HOME', os.path.expanduser('~/.ros'))
+        rospy.Subscriber('/tf', TFMessage, cls.on_tf, queue_size=100)
+        rospy.Subscriber('/clock', Clock, cls.on_clock, queue_size=100)
+        # rostest starts no rosout node, so there is no /rosout_agg: listen to /rosout itself.
+        rospy.Subscriber('/rosout', Log, cls.on_log, queue_size=1000)
+
+    @classmethod
+    def on_tf(cls, msg):
+        for t in msg.transforms:
+            if t.child_frame_id == ROBOT_FRAME:
+                with cls.lock:
+                    v = t.transform.translation
+                    cls.robot = np.array([v.x, v.y, v.z])
+
+    @classmethod
+    def on_clock(cls, msg):
+        with cls.lock:
+            t = msg.clock.to_sec()
+            if cls.clock is not None and t < cls.clock - 1.0:
+                cls.jumps += 1
+            cls.clock = t
+
+    @classmethod
+    def on_log(cls, msg):
+        if msg.name == RVIZ:
+            if msg.level >= Log.ERROR:
+                cls.rviz_errors.append(msg.msg)
+            elif msg.level == Log.WARN:
+                cls.rviz_warnings.append(msg.msg)
+
+    def bag_time(self):
+        with self.lock:
+            return self.clock if self.clock is not None else -1.0
+
+    def robot_position(self):
+        with self.lock:
+            return None if self.robot is None else self.robot.copy()
+
+    def wait_for_shot_window(self, min_jumps):
+        """Waits for bag time inside SHOT_WINDOW in a pass after `min_jumps` loops."""
+        wait_until(lambda: self.jumps >= min_jumps
+                   and SHOT_WINDOW[0] <= self.bag_time() <= SHOT_WINDOW[1],
+                   'bag time in [%g, %g] s after %d loop(s)' % (SHOT_WINDOW + (min_jumps,)),
+                   PASS_DEADLINE)
+
+    def shot(self, label):
+        """A screenshot with the robot's position from /tf just before and after it."""
+        before, t_before = self.robot_position(), self.bag_time()
+        image, ppm = grab_screen()
+        after, t_after = self.robot_position(), self.bag_time()
+        path = os.path.join(self.shot_dir, 'replay_rviz_%s.png' % label)
+        subprocess.run(['convert', 'ppm:-', path], input=ppm, check=True, timeout=30)
+        rospy.loginfo('%s: screenshot %s taken at bag time %.2f-%.2f s', NAME, path, t_before,
+                      t_after)
+        robot = None if before is None or after is None else (before + after) / 2.0
+        return image, robot, path
+
+    def check_shot(self, image, robot, path):
+        panel = find_panel(image, self.background)
+        self.assertIsNotNone(panel, 'no 3D panel (background %s) in %s' % (self.background, path))
+        top, bottom, left, right = panel
+        self.assertGreater(right - left, 300, 'the 3D panel is too narrow: %s in %s' % (panel, path))
+        self.assertGreater(bottom - top, 300, 'the 3D panel is too low: %s in %s' % (panel, path))
+        p = image[top:bottom + 1, left:right + 1].astype(int)
+        path_px, trail_px, terrain_px = (int(m.sum()) for m in colour_classes(p))
+        terrain_fraction = terrain_px / float(p.shape[0] * p.shape[1])
+        self.assertIsNotNone(robot, 'no %s on /tf' % ROBOT_FRAME)
+        centre = self.camera.project(robot, panel)
+        rim = self.camera.project(robot + np.array([0.0, 0.0, RADIUS]), panel)
+        radius = math.hypot(rim[0] - centre[0], rim[1] - centre[1])
+        on_robot = robot_pixels(image, centre, radius)
+        controls = [robot_pixels(image, (centre[0] + 4 * radius * math.cos(a),
+                                         centre[1] + 4 * radius * math.sin(a)), radius)
+                    for a in np.linspace(0.0, 2.0 * math.pi, 8, endpoint=False)]
+        rospy.loginfo('%s: %s: panel rows %d-%d cols %d-%d; path %d px, trail %d px, terrain %.2f '
+                      'of the panel; robot at (%.2f, %.2f, %.2f) m -> px (%.0f, %.0f), r %.1f px: '
+                      '%d robot-coloured px, controls %s', NAME, os.path.basename(path), top, bottom,
+                      left, right, path_px, trail_px, terrain_fraction, robot[0], robot[1], robot[2],
+                      centre[0], centre[1], radius, on_robot, controls)
+        self.assertGreater(terrain_fraction, MIN_TERRAIN_FRACTION,
+                           'blank 3D panel? terrain covers %.2f of it in %s' % (terrain_fraction, path))
+        self.assertGreater(path_px, MIN_PATH_PIXELS, 'desired path missing in %s' % path)
+        self.assertGreater(trail_px, MIN_TRAIL_PIXELS, 'driven trail missing in %s' % path)
+        self.assertGreater(on_robot, MIN_ROBOT_PIXELS,
+                           'robot not where tf puts it (px %.0f, %.0f) in %s' % (centre + (path,)))
+        self.assertGreater(on_robot, 3 * sorted(controls)[len(controls) // 2] + 10,
+                           'robot colours no more frequent at the robot than elsewhere in %s' % path)
+
+    def test_01_config_loaded(self):
+        self.assertIn('/sphere/desired_path', self.topics)
+        master = rosgraph.Master(NAME)
+
+        def missing():
+            subscribed = {topic for topic, nodes in master.getSystemState()[1] if RVIZ in nodes}
+            return [t for t in ['/tf', '/tf_static'] + self.topics if t not in subscribed]
+        wait_until(lambda: not missing(), '%s to subscribe to the topics of its config' % RVIZ,
+                   STARTUP_DEADLINE)
+        self.assertTrue(rospy.has_param('/sphere/robot_description'))
+
+    def test_02_screenshot(self):
+        wait_until(lambda: self.robot_position() is not None, 'the robot on /tf', STARTUP_DEADLINE)
+        # rviz needs a moment after subscribing to draw; a pass that began before it was up is
+        # fine too, as long as the shot falls in the window.
+        time.sleep(3.0)
+        self.wait_for_shot_window(0)
+        image, robot, path = self.shot('first_pass')
+        self.check_shot(image, robot, path)
+        time.sleep(1.0)
+        image2, _, _ = self.shot('one_second_later')
+        changed = int(np.any(image != image2, axis=2).sum())
+        rospy.loginfo('%s: %d pixels changed in 1 s', NAME, changed)
+        self.assertGreater(changed, MIN_CHANGED_PIXELS, 'rviz is not rendering live')
+
+    def test_03_after_loop(self):
+        jumps = self.jumps
+        self.wait_for_shot_window(jumps + 1)
+        image, robot, path = self.shot('after_loop')
+        self.check_shot(image, robot, path)
+
+    def test_04_no_rviz_errors(self):
+        time.sleep(1.0)  # let /rosout catch up
+        jumps = [w for w in self.rviz_warnings if 'jump back in time' in w]
+        rospy.loginfo('%s: %d loops seen on /clock; rviz warned %d times of a jump back in time',
+                      NAME, self.jumps, len(jumps))
+        self.assertEqual(self.rviz_errors, [], 'rviz logged errors')
+
+
+if __name__ == '__main__':
+    rospy.init_node(NAME)
+    rostest.rosrun(PKG, NAME, ReplayRvizCheck)
