@@ -1,7 +1,7 @@
 // sphere_sim's command-line contract (DESIGN.md, "sphere_sim") and the terrain subcommand's CSV,
 // checked by running the built executable against independent truth: the closed forms of the
 // surface (eq 59) and the paths, and the geometry every row must satisfy.
-// The option parser shared by all subcommands is also tested in-process.
+// The option parser and JSON writer shared by all subcommands are also tested in-process.
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -12,11 +12,15 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sphere_sim_cli.hpp"
@@ -479,6 +483,236 @@ TEST(SphereSimCliTest, FormatsNumbersAtFullPrecision) {
   }
   EXPECT_EQ(cli::formatNumber(0.1), "0.1");
   EXPECT_EQ(cli::formatNumber(-0.0), "0");
+}
+
+// --- JSON ------------------------------------------------------------------------------------
+
+/// A JSON value read back strictly: anything that is not JSON makes parseJson throw.
+struct Json {
+  enum class Type { Null, Boolean, Number, String, Array, Object };
+  Type type = Type::Null;
+  bool boolean = false;
+  double number = 0.0;
+  std::string text;  // a string's value, or a number's literal as written
+  std::vector<Json> items;
+  std::vector<std::pair<std::string, Json>> members;  // in file order
+
+  bool has(const std::string& key) const {
+    return std::any_of(members.begin(), members.end(),
+                       [&](const auto& m) { return m.first == key; });
+  }
+  const Json& operator[](const std::string& key) const {
+    for (const auto& member : members) {
+      if (member.first == key) return member.second;
+    }
+    throw std::runtime_error("no member " + key);
+  }
+};
+
+class JsonParser {
+ public:
+  explicit JsonParser(std::string text) : text_(std::move(text)) {}
+
+  Json parse() {
+    Json result = value();
+    skipSpace();
+    if (at_ != text_.size()) fail("text after the value");
+    return result;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const {
+    throw std::runtime_error("JSON: " + what + " at offset " + std::to_string(at_));
+  }
+  void skipSpace() {
+    while (at_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[at_]))) ++at_;
+  }
+  bool take(char c) {
+    skipSpace();
+    if (at_ < text_.size() && text_[at_] == c) {
+      ++at_;
+      return true;
+    }
+    return false;
+  }
+  void expect(char c) {
+    if (!take(c)) fail(std::string("expected '") + c + "'");
+  }
+  bool takeWord(const std::string& word) {
+    if (text_.compare(at_, word.size(), word) != 0) return false;
+    at_ += word.size();
+    return true;
+  }
+  std::string string() {
+    expect('"');
+    std::string out;
+    while (at_ < text_.size() && text_[at_] != '"') {
+      if (static_cast<unsigned char>(text_[at_]) < 0x20) fail("control character in a string");
+      if (text_[at_] == '\\') {
+        if (++at_ >= text_.size()) fail("unfinished escape");
+        const char c = text_[at_];
+        if (c == 'u') {
+          if (at_ + 4 >= text_.size()) fail("short \\u escape");
+          out += static_cast<char>(std::stoi(text_.substr(at_ + 1, 4), nullptr, 16));
+          at_ += 4;
+        } else if (std::string("\"\\/").find(c) != std::string::npos) {
+          out += c;
+        } else {
+          const std::map<char, char> escapes = {
+              {'n', '\n'}, {'t', '\t'}, {'r', '\r'}, {'b', '\b'}, {'f', '\f'}};
+          const auto escape = escapes.find(c);
+          if (escape == escapes.end()) fail("bad escape");
+          out += escape->second;
+        }
+        ++at_;
+      } else {
+        out += text_[at_++];
+      }
+    }
+    expect('"');
+    return out;
+  }
+  Json value() {
+    skipSpace();
+    if (at_ >= text_.size()) fail("missing value");
+    Json result;
+    const char c = text_[at_];
+    if (c == '{') {
+      result.type = Json::Type::Object;
+      ++at_;
+      if (take('}')) return result;
+      do {
+        skipSpace();
+        std::string key = string();
+        expect(':');
+        result.members.emplace_back(std::move(key), value());
+      } while (take(','));
+      expect('}');
+    } else if (c == '[') {
+      result.type = Json::Type::Array;
+      ++at_;
+      if (take(']')) return result;
+      do {
+        result.items.push_back(value());
+      } while (take(','));
+      expect(']');
+    } else if (c == '"') {
+      result.type = Json::Type::String;
+      result.text = string();
+    } else if (takeWord("true") || takeWord("false")) {
+      result.type = Json::Type::Boolean;
+      result.boolean = c == 't';
+    } else if (takeWord("null")) {
+      result.type = Json::Type::Null;
+    } else {
+      // JSON's number grammar: -?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?
+      const std::size_t start = at_;
+      const auto digits = [&] {
+        const std::size_t first = at_;
+        while (at_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[at_]))) ++at_;
+        if (at_ == first) fail("expected a digit");
+      };
+      if (text_[at_] == '-') ++at_;
+      if (at_ < text_.size() && text_[at_] == '0') {
+        ++at_;
+      } else {
+        digits();
+      }
+      if (at_ < text_.size() && text_[at_] == '.') {
+        ++at_;
+        digits();
+      }
+      if (at_ < text_.size() && (text_[at_] == 'e' || text_[at_] == 'E')) {
+        ++at_;
+        if (at_ < text_.size() && (text_[at_] == '+' || text_[at_] == '-')) ++at_;
+        digits();
+      }
+      result.type = Json::Type::Number;
+      result.text = text_.substr(start, at_ - start);
+      result.number = std::strtod(result.text.c_str(), nullptr);
+    }
+    return result;
+  }
+
+  std::string text_;
+  std::size_t at_ = 0;
+};
+
+Json parseJson(const std::string& text) { return JsonParser(text).parse(); }
+
+/// value as printf's %.17g writes it: 17 significant digits, trailing zeros dropped.
+std::string printf17(double value) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+TEST(JsonWriterTest, WritesNestedValuesAtSeventeenDigits) {
+  std::ostringstream out;
+  cli::JsonWriter json(out);
+  json.text("name", "a \"quoted\"\\path\n")
+      .number("tenth", 0.1)
+      .number("one", 1.0)
+      .number("negative_zero", -0.0)
+      .numbers("omega", {-1.0, 1.0 / 3.0, 6.02214076e23})
+      .numbers("none", {})
+      .boolean("ok", true)
+      .beginObject("half")
+      .number("u", 2.5)
+      .end()
+      .beginArray("solutions")
+      .beginObject()
+      .number("a", 1e-300)
+      .end()
+      .beginObject()
+      .end()
+      .end()
+      .finish();
+  EXPECT_EQ(out.str(),
+            "{\n"
+            "  \"name\": \"a \\\"quoted\\\"\\\\path\\u000a\",\n"
+            "  \"tenth\": 0.10000000000000001,\n"
+            "  \"one\": 1,\n"
+            "  \"negative_zero\": 0,\n"
+            "  \"omega\": [-1, 0.33333333333333331, 6.0221407599999999e+23],\n"
+            "  \"none\": [],\n"
+            "  \"ok\": true,\n"
+            "  \"half\": {\n"
+            "    \"u\": 2.5\n"
+            "  },\n"
+            "  \"solutions\": [\n"
+            "    {\n"
+            "      \"a\": 1e-300\n"
+            "    },\n"
+            "    {}\n"
+            "  ]\n"
+            "}\n");
+  const Json read = parseJson(out.str());
+  EXPECT_EQ(read["name"].text, "a \"quoted\"\\path\n");
+  EXPECT_EQ(read["tenth"].number, 0.1);
+  EXPECT_EQ(read["omega"].items.at(1).number, 1.0 / 3.0);
+  EXPECT_EQ(read["solutions"].items.at(0)["a"].number, 1e-300);
+  for (const double value : {0.1, 1.0 / 3.0, -2.7182818284590451, 1e-300, 6.02214076e23, 1e22}) {
+    const std::string text = cli::JsonWriter::formatNumber17(value);
+    EXPECT_EQ(std::strtod(text.c_str(), nullptr), value) << text;
+    EXPECT_EQ(text, printf17(value));
+  }
+}
+
+TEST(JsonWriterTest, RejectsNonFiniteNumbersAndMisuse) {
+  std::ostringstream out;
+  cli::JsonWriter json(out);
+  EXPECT_THROW(json.number("x", std::nan("")), std::runtime_error);
+  EXPECT_THROW(json.numbers("v", {1.0, INFINITY}), std::runtime_error);
+  EXPECT_EQ(out.str(), "{");                   // nothing of the rejected members was written
+  EXPECT_THROW(json.end(), std::logic_error);  // only finish() closes the top level
+  json.beginArray("list");
+  EXPECT_THROW(json.number("keyed", 1.0), std::logic_error);  // arrays hold no keys
+  EXPECT_THROW(json.finish(), std::logic_error);              // the array is still open
+  json.end().finish();
+  EXPECT_THROW(json.finish(), std::logic_error);
+  EXPECT_THROW(json.number("late", 1.0), std::logic_error);
+  EXPECT_NO_THROW(parseJson(out.str()));
 }
 
 }  // namespace

@@ -330,4 +330,127 @@ void CsvWriter::row(std::initializer_list<double> values) {
   out_.write(line_.data(), static_cast<std::streamsize>(line_.size()));
 }
 
+JsonWriter::JsonWriter(std::ostream& out) : out_(out), closers_("}") { out_ << '{'; }
+
+std::string JsonWriter::formatNumber17(double value) {
+  char digits[32];  // "-1.2345678901234567e-308" is 24 characters
+  // + 0.0 turns -0 into 0, as in CSV.
+  return std::string(digits, std::to_chars(digits, digits + sizeof digits, value + 0.0,
+                                           std::chars_format::general, 17)
+                                 .ptr);
+}
+
+void JsonWriter::writeQuoted(std::string_view text) {
+  out_ << '"';
+  for (const char c : text) {
+    if (c == '"' || c == '\\') {
+      out_ << '\\' << c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(c));
+      out_ << escaped;
+    } else {
+      out_ << c;
+    }
+  }
+  out_ << '"';
+}
+
+void JsonWriter::beginElement(std::optional<std::string_view> key) {
+  if (closers_.empty()) throw std::logic_error("JSON: writing after finish()");
+  const bool in_object = closers_.back() == '}';
+  if (in_object != key.has_value()) {
+    throw std::logic_error(in_object ? "JSON: an object member needs a key"
+                                     : "JSON: an array element takes no key");
+  }
+  out_ << (empty_ ? "\n" : ",\n") << std::string(2 * closers_.size(), ' ');
+  if (key) {
+    writeQuoted(*key);
+    out_ << ": ";
+  }
+  empty_ = false;
+}
+
+void JsonWriter::open(std::optional<std::string_view> key, char bracket) {
+  beginElement(key);
+  out_ << bracket;
+  closers_ += bracket == '{' ? '}' : ']';
+  empty_ = true;
+}
+
+JsonWriter& JsonWriter::number(std::string_view key, double value) {
+  if (!std::isfinite(value)) {
+    throw std::runtime_error("JSON member " + std::string(key) + " would hold " +
+                             formatNumber(value));
+  }
+  beginElement(key);
+  out_ << formatNumber17(value);
+  return *this;
+}
+
+JsonWriter& JsonWriter::numbers(std::string_view key, const std::vector<double>& values) {
+  for (const double value : values) {
+    if (!std::isfinite(value)) {
+      throw std::runtime_error("JSON member " + std::string(key) + " would hold " +
+                               formatNumber(value));
+    }
+  }
+  beginElement(key);
+  out_ << '[';
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    out_ << (i > 0 ? ", " : "") << formatNumber17(values[i]);
+  }
+  out_ << ']';
+  return *this;
+}
+
+JsonWriter& JsonWriter::text(std::string_view key, std::string_view value) {
+  beginElement(key);
+  writeQuoted(value);
+  return *this;
+}
+
+JsonWriter& JsonWriter::boolean(std::string_view key, bool value) {
+  beginElement(key);
+  out_ << (value ? "true" : "false");
+  return *this;
+}
+
+JsonWriter& JsonWriter::beginObject(std::string_view key) {
+  open(key, '{');
+  return *this;
+}
+
+JsonWriter& JsonWriter::beginArray(std::string_view key) {
+  open(key, '[');
+  return *this;
+}
+
+JsonWriter& JsonWriter::beginObject() {
+  open(std::nullopt, '{');
+  return *this;
+}
+
+JsonWriter& JsonWriter::end() {
+  if (closers_.size() < 2) {
+    throw std::logic_error(
+        "JSON: end() without an open object or array (finish() closes the "
+        "top-level object)");
+  }
+  if (!empty_) out_ << '\n' << std::string(2 * (closers_.size() - 1), ' ');
+  out_ << closers_.back();
+  closers_.pop_back();
+  empty_ = false;
+  return *this;
+}
+
+void JsonWriter::finish() {
+  if (closers_.size() != 1) {
+    throw std::logic_error(closers_.empty() ? "JSON: finish() called twice"
+                                            : "JSON: finish() with an object or array still open");
+  }
+  out_ << (empty_ ? "}\n" : "\n}\n");
+  closers_.clear();
+}
+
 }  // namespace spherical_robots::sphere_sim

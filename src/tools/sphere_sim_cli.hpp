@@ -1,8 +1,8 @@
 #pragma once
 // The command-line machinery every sphere_sim subcommand shares (DESIGN.md, "sphere_sim"):
 // dispatch, option tables with --help, option values that may begin with '-', numbers that
-// parse nan/inf and then reject them, comma-separated lists, exit statuses, CSV rows at full
-// precision and output files that appear only when complete.
+// parse nan/inf and then reject them, comma-separated lists, exit statuses, CSV rows and JSON
+// objects at full precision and output files that appear only when complete.
 //
 // A subcommand is a table of OptionSpec plus a run function; see terrain_command.cpp.
 
@@ -12,9 +12,11 @@
 #include <initializer_list>
 #include <map>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace spherical_robots::sphere_sim {
@@ -150,6 +152,47 @@ class CsvWriter {
   std::ostream& out_;
   std::vector<std::string> columns_;
   std::string line_;  // reused for every row, so writing allocates nothing after the first
+};
+
+/// JSON output (DESIGN.md): one object, written as it is built, keys in the order given, two-space
+/// indentation, numbers as JSON numbers with 17 significant digits (−0 written as 0), arrays of
+/// numbers on one line. Misuse (a key inside an array, none inside an object, unbalanced
+/// begin/end, writing after finish) is a std::logic_error; the stream must outlive the writer.
+class JsonWriter {
+ public:
+  /// Writes the opening brace of the top-level object.
+  explicit JsonWriter(std::ostream& out);
+
+  /// A number member of the current object. @throw std::runtime_error naming the key if the value
+  /// is not finite (JSON has no nan or inf).
+  JsonWriter& number(std::string_view key, double value);
+  /// A member holding an array of numbers, e.g. "omega": [0.5, -1, 0]. @throw as number().
+  JsonWriter& numbers(std::string_view key, const std::vector<double>& values);
+  JsonWriter& text(std::string_view key, std::string_view value);
+  JsonWriter& boolean(std::string_view key, bool value);
+  /// Opens an object or array member of the current object; end() closes it.
+  JsonWriter& beginObject(std::string_view key);
+  JsonWriter& beginArray(std::string_view key);
+  /// Opens an object as the next element of the current array.
+  JsonWriter& beginObject();
+  /// Closes the innermost open object or array (not the top-level object: see finish()).
+  JsonWriter& end();
+  /// Closes the top-level object and ends the line. @throw std::logic_error if anything else is
+  /// still open.
+  void finish();
+
+  /// value with 17 significant digits, as the writer puts it (e.g. 0.1 -> 0.10000000000000001).
+  static std::string formatNumber17(double value);
+
+ private:
+  /// Starts a new element: comma, newline, indentation, and "key": in an object.
+  void beginElement(std::optional<std::string_view> key);
+  void open(std::optional<std::string_view> key, char bracket);
+  void writeQuoted(std::string_view text);
+
+  std::ostream& out_;
+  std::string closers_;  // one ']' or '}' per open container, innermost last
+  bool empty_ = true;    // the innermost container has no element yet
 };
 
 }  // namespace spherical_robots::sphere_sim
