@@ -1,6 +1,7 @@
 // sphere_sim's command-line contract (DESIGN.md, "sphere_sim") and the terrain subcommand's CSV,
 // checked by running the built executable against independent truth: the closed forms of the
-// surface (eq 59) and the paths, and the geometry every row must satisfy.
+// surface (eq 59) and the paths, and the geometry every row must satisfy. The roller
+// subcommand's JSON is checked against the published numbers of Kimura et al. 2019.
 // The option parser and JSON writer shared by all subcommands are also tested in-process.
 
 #include <fcntl.h>
@@ -713,6 +714,198 @@ TEST(JsonWriterTest, RejectsNonFiniteNumbersAndMisuse) {
   EXPECT_THROW(json.finish(), std::logic_error);
   EXPECT_THROW(json.number("late", 1.0), std::logic_error);
   EXPECT_NO_THROW(parseJson(out.str()));
+}
+
+// --- sphere_sim roller (Kimura et al. 2019) -----------------------------------------------------
+
+/// Section 3 of the paper: r = 1 m, P1 at (215, 60) deg, P2 at (325, 60) deg (docs/errata.md, K5).
+const std::vector<std::string> kPaperDrive = {"--r", "1", "--contacts", "215,60,325,60"};
+
+class SphereSimRollerTest : public SphereSimTest {
+ protected:
+  void SetUp() override {
+    SphereSimTest::SetUp();
+    out_ = dir_ / "roller.json";
+  }
+
+  /// `sphere_sim roller ARGS --out out_`.
+  Process roller(const std::vector<std::string>& args) const {
+    std::vector<std::string> full = {"roller"};
+    full.insert(full.end(), args.begin(), args.end());
+    full.insert(full.end(), {"--out", out_.string()});
+    return run(full);
+  }
+
+  /// The paper's drive with alpha2 = -alpha1, plus args; the JSON it wrote.
+  Json paper(double alpha1_deg, const std::vector<std::string>& args) const {
+    std::vector<std::string> full = kPaperDrive;
+    full.insert(full.end(), {"--alpha-deg",
+                             cli::formatNumber(alpha1_deg) + "," + cli::formatNumber(-alpha1_deg)});
+    full.insert(full.end(), args.begin(), args.end());
+    const Process process = roller(full);
+    EXPECT_EQ(process.status, 0) << process.err;
+    EXPECT_EQ(std::count(process.out.begin(), process.out.end(), '\n'), 1) << process.out;
+    return parseJson(readFile(out_));
+  }
+};
+
+const std::vector<std::string> kRollerKeys = {
+    "omega", "speed", "direction_deg", "rho_deg", "v1", "v2", "S1", "S2"};
+
+TEST_F(SphereSimRollerTest, InverseReproducesThePublishedSpeedsAtNinetyDegrees) {
+  // Section 3 at phi = 90 deg, ||V|| = 1 m/s: |v_{i,k}| = 0.91, 0.93 and |S_{i,k}| = 0, 0.16 m/s
+  // for alpha1 = 0, 10 deg. (The values for 20 and 30 deg do not reproduce: errata K6, and
+  // test_friction_drive.)
+  const std::vector<std::pair<double, std::pair<double, double>>> published = {
+      {0.0, {0.91, 0.0}}, {10.0, {0.93, 0.16}}};
+  for (const auto& [alpha, values] : published) {
+    const Json json = paper(alpha, {"--speed", "1", "--direction-deg", "90"});
+    for (const std::string& key : kRollerKeys) EXPECT_TRUE(json.has(key)) << key;
+    EXPECT_EQ(json["mode"].text, "inverse");
+    ASSERT_EQ(json["omega"].items.size(), 3u);
+    EXPECT_NEAR(json["omega"].items[0].number, -1.0, 1e-12);
+    EXPECT_NEAR(json["omega"].items[1].number, 0.0, 1e-12);
+    EXPECT_NEAR(json["omega"].items[2].number, 0.0, 1e-12);
+    EXPECT_NEAR(json["speed"].number, 1.0, 1e-12);
+    EXPECT_NEAR(json["direction_deg"].number, 90.0, 1e-9);
+    EXPECT_NEAR(json["rho_deg"].number, 0.0, 1e-9);
+    for (const char* v : {"v1", "v2"}) {
+      EXPECT_NEAR(json[v].number, values.first, 0.005) << v;  // signed: both positive
+    }
+    EXPECT_NEAR(json["S1"].number, values.second, 0.005);
+    EXPECT_NEAR(json["S2"].number, -values.second, 0.005);  // S2 = -S1
+    for (const auto& [key, value] : json.members) {
+      if (value.type == Json::Type::Number) {
+        EXPECT_EQ(value.text, printf17(value.number + 0.0)) << key;
+      }
+    }
+  }
+}
+
+TEST_F(SphereSimRollerTest, ForwardOfTheInverseSpeedsGivesTheMotionBack) {
+  const Json inverse = paper(20.0, {"--speed", "0.8", "--direction-deg", "-30"});
+  EXPECT_NEAR(inverse["direction_deg"].number, 330.0, 1e-9);  // wrapped into [0, 360)
+  const Json forward =
+      paper(20.0, {"--roller-speeds", inverse["v1"].text + "," + inverse["v2"].text});
+  EXPECT_EQ(forward["mode"].text, "forward");
+  EXPECT_NEAR(forward["speed"].number, 0.8, 1e-12);
+  EXPECT_NEAR(forward["direction_deg"].number, 330.0, 1e-9);
+  EXPECT_NEAR(forward["rho_deg"].number, inverse["rho_deg"].number, 1e-9);
+  for (const char* key : {"S1", "S2"}) {
+    EXPECT_NEAR(forward[key].number, inverse[key].number, 1e-12) << key;
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_NEAR(forward["omega"].items.at(i).number, inverse["omega"].items.at(i).number, 1e-12);
+  }
+  // With slip: S1 = -S2 = (v1 sin 20 - v2 sin(-20)) / 2.
+  const double lift =
+      (inverse["v1"].number + inverse["v2"].number) * std::sin(20.0 * M_PI / 180.0) / 2;
+  EXPECT_NEAR(forward["S1"].number, lift, 1e-12);
+  EXPECT_GT(std::abs(lift), 0.01);
+}
+
+TEST_F(SphereSimRollerTest, DirectionsStayBelowThreeSixty) {
+  // omega_x = 0, omega_y > 0 is phi = 0 (eq 14 as printed says 360, errata K3).
+  const Json json = paper(0.0, {"--speed", "1", "--direction-deg", "-1e-14"});
+  EXPECT_GE(json["direction_deg"].number, 0.0);
+  EXPECT_LT(json["direction_deg"].number, 360.0);
+  const Json zero = paper(0.0, {"--speed", "2", "--direction-deg", "720"});
+  EXPECT_EQ(zero["direction_deg"].number, 0.0);
+  const Json back = paper(0.0, {"--roller-speeds", zero["v1"].text + "," + zero["v2"].text});
+  EXPECT_LT(back["direction_deg"].number, 360.0);
+  EXPECT_NEAR(std::remainder(back["direction_deg"].number, 360.0), 0.0, 1e-9);
+}
+
+TEST_F(SphereSimRollerTest, UsageErrorsExitTwoWithNoOutput) {
+  const std::vector<std::string> geometry = {"--r",           "1",           "--contacts",
+                                             "215,60,325,60", "--alpha-deg", "10,-10"};
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--speed", "1", "--direction-deg", "90", "--roller-speeds", "1,1"}, "not both"},
+      {{}, "--roller-speeds"},
+      {{"--speed", "1"}, "--direction-deg"},
+      {{"--direction-deg", "90"}, "--speed"},
+      {{"--speed", "1", "--direction-deg", "9O"}, "9O"},
+      {{"--roller-speeds", "1,2,3"}, "--roller-speeds"},
+      {{"--roller-speeds", "1"}, "--roller-speeds"},
+      {{"--roller-speeds", "1,2", "--gain", "3"}, "--gain"},
+  };
+  for (const auto& [args, culprit] : cases) {
+    std::vector<std::string> full = geometry;
+    full.insert(full.end(), args.begin(), args.end());
+    const Process process = roller(full);
+    EXPECT_EQ(process.status, cli::kUsageError) << culprit << ": " << process.err;
+    EXPECT_NE(process.err.find(culprit), std::string::npos) << process.err;
+    EXPECT_NE(process.err.find("usage: sphere_sim roller"), std::string::npos) << process.err;
+    expectNoOutputFiles();
+  }
+  for (const auto& [args, culprit] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"--contacts", "215,60,325", "--alpha-deg", "0,0", "--r", "1"}, "--contacts"},
+           {{"--contacts", "215,60,325,60", "--alpha-deg", "0", "--r", "1"}, "--alpha-deg"},
+           {{"--contacts", "215,60,325,60", "--alpha-deg", "0,0"}, "--r"}}) {
+    std::vector<std::string> full = args;
+    full.insert(full.end(), {"--speed", "1", "--direction-deg", "0"});
+    const Process process = roller(full);
+    EXPECT_EQ(process.status, cli::kUsageError) << culprit << ": " << process.err;
+    EXPECT_NE(process.err.find(culprit), std::string::npos) << process.err;
+    expectNoOutputFiles();
+  }
+}
+
+TEST_F(SphereSimRollerTest, InvalidOrDegenerateInputExitsFourWithOneLineAndNoOutput) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--r", "0", "--contacts", "215,60,325,60", "--alpha-deg", "10,-10"}, "radius"},
+      {{"--r", "-1", "--contacts", "215,60,325,60", "--alpha-deg", "10,-10"}, "radius"},
+      {{"--r", "nan", "--contacts", "215,60,325,60", "--alpha-deg", "10,-10"}, "--r"},
+      {{"--r", "1", "--contacts", "215,60,inf,60", "--alpha-deg", "10,-10"}, "--contacts"},
+      {{"--r", "1", "--contacts", "215,60,215,60", "--alpha-deg", "10,-10"}, "parallel"},
+      {{"--r", "1", "--contacts", "215,60,35,-60", "--alpha-deg", "10,-10"}, "antipodal"},
+      {{"--r", "1", "--contacts", "215,60,325,60", "--alpha-deg", "90,-10"}, "cos(alpha1)"},
+      {{"--r", "1", "--contacts", "215,60,325,60", "--alpha-deg", "10,-90"}, "cos(alpha2)"},
+      {{"--r", "1", "--contacts", "0,0,0,90", "--alpha-deg", "0,0"}, "eq 18"},
+  };
+  for (const auto& [args, culprit] : cases) {
+    std::vector<std::string> full = args;
+    full.insert(full.end(), {"--speed", "1", "--direction-deg", "45"});
+    const Process process = roller(full);
+    EXPECT_EQ(process.status, cli::kInvalidInput) << culprit << ": " << process.err;
+    EXPECT_NE(process.err.find(culprit), std::string::npos) << process.err;
+    EXPECT_EQ(std::count(process.err.begin(), process.err.end(), '\n'), 1) << process.err;
+    expectNoOutputFiles();
+  }
+  const std::vector<std::pair<std::vector<std::string>, std::string>> mode_cases = {
+      {{"--speed", "-1", "--direction-deg", "90"}, "speed"},
+      {{"--speed", "nan", "--direction-deg", "90"}, "--speed"},
+      {{"--speed", "1", "--direction-deg", "-inf"}, "--direction-deg"},
+      {{"--roller-speeds", "0,0"}, "no horizontal component"},
+      {{"--roller-speeds", "1,nan"}, "--roller-speeds"},
+  };
+  for (const auto& [args, culprit] : mode_cases) {
+    std::vector<std::string> full = kPaperDrive;
+    full.insert(full.end(), {"--alpha-deg", "10,-10"});
+    full.insert(full.end(), args.begin(), args.end());
+    const Process process = roller(full);
+    EXPECT_EQ(process.status, cli::kInvalidInput) << culprit << ": " << process.err;
+    EXPECT_NE(process.err.find(culprit), std::string::npos) << process.err;
+    EXPECT_EQ(std::count(process.err.begin(), process.err.end(), '\n'), 1) << process.err;
+    expectNoOutputFiles();
+  }
+}
+
+TEST_F(SphereSimRollerTest, HelpExplainsEveryOptionAndMember) {
+  const Process help = run({"roller", "--help"});
+  ASSERT_EQ(help.status, 0) << help.err;
+  for (const char* option : {"--r", "--contacts", "--alpha-deg", "--speed", "--direction-deg",
+                             "--roller-speeds", "--out"}) {
+    EXPECT_NE(help.out.find(option), std::string::npos) << option;
+  }
+  const Json json = paper(10.0, {"--roller-speeds", "1,0.5"});
+  for (const auto& member : json.members) {
+    EXPECT_TRUE(mentionsWord(help.out, member.first)) << member.first;
+  }
+  for (const char* topic : {"Exit status", "inverse", "forward", "eq 11", "eq 22", "eq 28"}) {
+    EXPECT_NE(help.out.find(topic), std::string::npos) << topic;
+  }
+  EXPECT_NE(run({"--help"}).out.find("roller"), std::string::npos);
 }
 
 }  // namespace
