@@ -97,7 +97,6 @@ sr_log "bag: $bag ($(du -h "$bag" | cut -f1))"
 
 python3 "$SR_ROOT/scripts/plot_terrain_run.py" "$bag" --out "$png" --paper "${png%.png}_paper.png" \
   | tee "$results/$run.summary.txt" || { sr_log "FAILED: plotting the run"; exit 1; }
-sr_log "paper-style figures: ${png%.png}_paper.png"
 sr_log "summary: $results/$run.summary.txt"
 sr_log "replay it in rviz: . install/setup.sh && roslaunch spherical_robots replay.launch bag:=$bag"
 
