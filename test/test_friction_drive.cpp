@@ -532,6 +532,14 @@ TEST(PaperSection3Test, PlacementIsTheOnlyOneTheTextAllows) {
   EXPECT_EQ(matches, 1);
   // And P1 at 215 deg, not 325 deg: e is the "upper unit normal" of span{P1, P2} (table 1).
   EXPECT_GT(paperDrive(0).geometry().normal().z(), 0.0);
+  // And alpha1 > 0: "|rho_0| < |rho_1| < |rho_2| < |rho_3|" needs it (at phi = 0: 71.7, 75.8,
+  // 80.2, 85.0 deg), while alpha1 = -10, -20, -30 deg gives 67.6, 63.2, 58.4 deg.
+  const std::array<double, 4> rho_positive = {71.68, 75.81, 80.16, 84.98};
+  const std::array<double, 4> rho_negative = {71.68, 67.55, 63.20, 58.37};
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_NEAR(-deg(paperDrive(kPaperAlphas[k]).rho(0.0)), rho_positive[k], 0.005);
+    EXPECT_NEAR(-deg(paperDrive(-kPaperAlphas[k]).rho(0.0)), rho_negative[k], 0.005);
+  }
   // At alpha = 0 the printed 0.91 m/s pins the common elevation to within about +-1 deg.
   EXPECT_TRUE(roundsTo(paperDrive(0).inverse(1.0, rad(90)).speeds.v1, 0.91));
   EXPECT_FALSE(roundsTo(paperDrive(0, 58.0).inverse(1.0, rad(90)).speeds.v1, 0.91));
