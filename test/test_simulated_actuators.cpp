@@ -1,8 +1,11 @@
 // SimulatedActuators against closed forms: constant-acceleration ramps, clamps, trapezoid
-// positions, the command-timeout watchdog, rejected commands, e-stop.
+// positions, the command-timeout watchdog, rejected commands, e-stop; the actuator models
+// (first-order lag, dead time, encoder quantisation, velocity noise).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -11,6 +14,7 @@
 #include "spherical_robots/hardware/simulated_actuators.hpp"
 
 using spherical_robots::hardware::ActuatorLimits;
+using spherical_robots::hardware::ActuatorModel;
 using spherical_robots::hardware::SimulatedActuators;
 
 namespace {
@@ -293,6 +297,267 @@ TEST(SimulatedActuators, BadConstructorArgumentsThrowWithContext) {
     EXPECT_TRUE(contains(constructionError(names, good, bad), "command_timeout")) << bad;
   }
   EXPECT_TRUE(contains(constructionError(names, {{-3.0, 20.0}, {10.0, 20.0}}, 0.5), "got -3"));
+}
+
+// ---- Actuator models ------------------------------------------------------------------------
+
+namespace {
+
+// Three actuators as in makeActuators, the same model for each; the clock starts at t = 0.
+SimulatedActuators makeModelled(const ActuatorModel& model, double max_acceleration = 20.0,
+                                double timeout = 100.0, std::uint32_t seed = 0) {
+  SimulatedActuators actuators({"theta", "phi", "psi"},
+                               std::vector<ActuatorLimits>(3, {10.0, max_acceleration}), timeout,
+                               std::vector<ActuatorModel>(3, model), seed);
+  actuators.update(0.0);
+  return actuators;
+}
+
+ActuatorModel lag(double tau) {
+  ActuatorModel model;
+  model.time_constant = tau;
+  return model;
+}
+
+}  // namespace
+
+// With tau = 0.2 s and a = 100 rad/s^2 a step of 5 rad/s never saturates (5/0.2 = 25 < 100):
+// v(t) = v_sp (1 - e^{-t/tau}), x(t) = v_sp (t - tau (1 - e^{-t/tau})), whatever the step.
+TEST(SimulatedActuatorModels, LagStepResponseIsTheExponentialWhateverTheStep) {
+  const double tau = 0.2, v_sp = 5.0;
+  for (double dt : {0.001, 0.0137, 0.1, 0.4, 3.0}) {
+    auto actuators = makeModelled(lag(tau), 100.0);
+    ASSERT_EQ(actuators.command({"theta", "phi"}, {v_sp, -v_sp}, 0.0), "");
+    double t = 0.0;
+    while (t < 3.0) {
+      t = std::min(t + dt, 3.0);
+      actuators.update(t);
+      const double v = v_sp * (1.0 - std::exp(-t / tau));
+      const double x = v_sp * (t - tau * (1.0 - std::exp(-t / tau)));
+      EXPECT_NEAR(actuators.velocities()[0], v, 1e-12) << "t " << t << " dt " << dt;
+      EXPECT_NEAR(actuators.velocities()[1], -v, 1e-12) << "t " << t << " dt " << dt;
+      EXPECT_NEAR(actuators.positions()[0], x, 1e-12) << "t " << t << " dt " << dt;
+      EXPECT_EQ(actuators.velocities()[2], 0.0);
+    }
+  }
+  // The named points of the step response: 63.2 % at tau, 95.0 % at 3 tau.
+  auto actuators = makeModelled(lag(tau), 100.0);
+  ASSERT_EQ(actuators.command({"theta"}, {v_sp}, 0.0), "");
+  actuators.update(tau);
+  EXPECT_NEAR(actuators.velocities()[0] / v_sp, 0.6321205588285577, 1e-12);
+  actuators.update(3.0 * tau);
+  EXPECT_NEAR(actuators.velocities()[0] / v_sp, 0.950212931632136, 1e-12);
+}
+
+// dv/dt = clamp((u - v)/tau, ±a): a step of 8 rad/s with tau = 0.2 s, a = 20 rad/s^2 ramps at a
+// until u - v = a tau = 4 (t1 = 0.2 s), then v = u - 4 e^{-(t - t1)/tau}.
+TEST(SimulatedActuatorModels, LagSaturatesAtMaxAcceleration) {
+  const double tau = 0.2, a = 20.0, u = 8.0, t1 = (u - a * tau) / a;
+  for (double dt : {0.001, 0.03, 0.5}) {
+    auto actuators = makeModelled(lag(tau), a);
+    ASSERT_EQ(actuators.command({"psi"}, {u}, 0.0), "");
+    double t = 0.0;
+    while (t < 2.0) {
+      t = std::min(t + dt, 2.0);
+      actuators.update(t);
+      const double v = t <= t1 ? a * t : u - a * tau * std::exp(-(t - t1) / tau);
+      const double x = t <= t1 ? 0.5 * a * t * t
+                               : 0.5 * a * t1 * t1 + u * (t - t1) -
+                                     a * tau * tau * (1.0 - std::exp(-(t - t1) / tau));
+      EXPECT_NEAR(actuators.velocities()[2], v, 1e-12) << "t " << t << " dt " << dt;
+      EXPECT_NEAR(actuators.positions()[2], x, 1e-12) << "t " << t << " dt " << dt;
+    }
+  }
+}
+
+TEST(SimulatedActuatorModels, DeadTimeDelaysTheSetPointThenTheRampStarts) {
+  ActuatorModel model;
+  model.dead_time = 0.3;
+  for (double dt : {0.001, 0.07, 0.25}) {
+    auto actuators = makeModelled(model, 20.0, 100.0);
+    ASSERT_EQ(actuators.command({"theta"}, {5.0}, 0.0), "");
+    EXPECT_EQ(actuators.setpoints()[0], 5.0);
+    EXPECT_EQ(actuators.activeSetpoints()[0], 0.0);
+    double t = 0.0;
+    while (t < 2.0) {
+      t = std::min(t + dt, 2.0);
+      actuators.update(t);
+      if (t < 0.3) {
+        EXPECT_EQ(actuators.velocities()[0], 0.0) << "t " << t;
+        EXPECT_EQ(actuators.positions()[0], 0.0) << "t " << t;
+        EXPECT_EQ(actuators.activeSetpoints()[0], 0.0) << "t " << t;
+      } else {
+        EXPECT_EQ(actuators.activeSetpoints()[0], 5.0) << "t " << t;
+      }
+      EXPECT_NEAR(actuators.velocities()[0], std::clamp(20.0 * (t - 0.3), 0.0, 5.0), 1e-12)
+          << "t " << t << " dt " << dt;
+      EXPECT_NEAR(actuators.positions()[0], t < 0.3 ? 0.0 : rampPosition(5.0, 20.0, t - 0.3),
+                  1e-12)
+          << "t " << t << " dt " << dt;
+    }
+  }
+}
+
+TEST(SimulatedActuatorModels, DeadTimeThenLag) {
+  ActuatorModel model = lag(0.1);
+  model.dead_time = 0.05;
+  auto actuators = makeModelled(model, 100.0);
+  // Two commands in flight: 2 rad/s at 0 (active at 0.05), -1 rad/s at 0.02 (active at 0.07).
+  ASSERT_EQ(actuators.command({"phi"}, {2.0}, 0.0), "");
+  ASSERT_EQ(actuators.command({"phi"}, {-1.0}, 0.02), "");
+  actuators.update(0.05);
+  EXPECT_EQ(actuators.velocities()[1], 0.0);
+  actuators.update(0.2);
+  const double v_at_07 = 2.0 * (1.0 - std::exp(-0.02 / 0.1));
+  EXPECT_NEAR(actuators.velocities()[1], -1.0 + (v_at_07 + 1.0) * std::exp(-0.13 / 0.1), 1e-12);
+}
+
+TEST(SimulatedActuatorModels, WatchdogAndStopAreNotDelayedAndDropPendingSetPoints) {
+  ActuatorModel model;
+  model.dead_time = 0.3;
+  auto actuators = makeModelled(model, 20.0, 0.5);
+  ASSERT_EQ(actuators.command({"theta"}, {5.0}, 0.0), "");
+  ASSERT_EQ(actuators.command({"theta"}, {2.0}, 0.4), "");  // active at 0.7
+  // Up from 0.3 at 20 rad/s^2 (5 by 0.55); 2 becomes active at 0.7, before the deadline 0.9.
+  actuators.update(0.7);
+  EXPECT_NEAR(actuators.velocities()[0], 5.0, 1e-12);
+  EXPECT_EQ(actuators.activeSetpoints()[0], 2.0);
+  ASSERT_EQ(actuators.command({"theta"}, {4.0}, 0.8), "");  // pending until 1.1
+  actuators.update(1.3);  // deadline 1.3: velocity went 5 -> 2 by 0.85, held; now zero set-point
+  EXPECT_TRUE(actuators.timedOut());
+  EXPECT_EQ(actuators.activeSetpoints()[0], 0.0);
+  EXPECT_NEAR(actuators.velocities()[0], 4.0, 1e-12);  // 2 -> 4 from 1.1 (0.1 s), held to 1.3
+  actuators.update(1.5);
+  EXPECT_NEAR(actuators.velocities()[0], 0.0, 1e-12);
+  // stop() drops a pending set-point too.
+  ASSERT_EQ(actuators.command({"theta"}, {3.0}, 2.0), "");
+  actuators.stop(2.1);
+  actuators.update(3.0);
+  EXPECT_EQ(actuators.velocities()[0], 0.0);
+  EXPECT_EQ(actuators.activeSetpoints()[0], 0.0);
+
+  // A timeout shorter than the dead time: the watchdog (at 0.2) drops the set-point that would
+  // have become active at 0.3, so the actuator never moves.
+  auto slow = makeModelled(model, 20.0, 0.2);
+  ASSERT_EQ(slow.command({"phi"}, {5.0}, 0.0), "");
+  slow.update(0.2);
+  EXPECT_TRUE(slow.timedOut());
+  slow.update(1.0);
+  EXPECT_EQ(slow.velocities()[1], 0.0);
+  EXPECT_EQ(slow.positions()[1], 0.0);
+}
+
+TEST(SimulatedActuatorModels, QuantisedPositionIsAMultipleOfTheResolutionNearTheTrueOne) {
+  ActuatorModel model;
+  model.position_resolution = 2.0 * M_PI / 4096.0;  // a 12-bit encoder
+  const double res = model.position_resolution;
+  auto actuators = makeModelled(model);
+  ASSERT_EQ(actuators.command({"theta", "phi", "psi"}, {3.3, -0.7, 0.01}, 0.0), "");
+  bool differed = false;
+  for (double t = 0.0137; t < 3.0; t += 0.0137) {
+    actuators.update(t);
+    for (std::size_t i = 0; i < 3; ++i) {
+      const double reported = actuators.measuredPositions()[i];
+      const double steps = reported / res;
+      EXPECT_NEAR(steps, std::round(steps), 1e-9) << "t " << t;
+      EXPECT_LE(std::abs(reported - actuators.positions()[i]), 0.5 * res + 1e-12) << "t " << t;
+      differed = differed || reported != actuators.positions()[i];
+      // Velocity reported as-is: quantisation touches positions only.
+      EXPECT_EQ(actuators.measuredVelocities()[i], actuators.velocities()[i]);
+    }
+  }
+  EXPECT_TRUE(differed);
+  // The true state is the unquantised one: still the ramp's closed form.
+  EXPECT_NEAR(actuators.positions()[0], rampPosition(3.3, 20.0, actuators.now()), 1e-9);
+}
+
+// N = 20000 samples of sigma = 0.5 rad/s on a constant true velocity: the sample mean is within
+// 4 sigma/sqrt(N) of 0 and the sample standard deviation within 4 sigma/sqrt(2N) of sigma (the
+// standard errors of the two estimates, 4 of them: deterministic anyway, the seed is fixed).
+TEST(SimulatedActuatorModels, NoiseIsReproducibleGaussianAndLeavesTheTrueStateAlone) {
+  ActuatorModel model;
+  model.velocity_noise = 0.5;
+  const double sigma = model.velocity_noise;
+  auto a = makeModelled(model, 20.0, 1e6, 42);
+  auto b = makeModelled(model, 20.0, 1e6, 42);
+  auto other_seed = makeModelled(model, 20.0, 1e6, 43);
+  auto ideal = makeModelled(ActuatorModel{}, 20.0, 1e6);
+  for (auto* actuators : {&a, &b, &other_seed, &ideal})
+    ASSERT_EQ(actuators->command({"theta", "phi"}, {2.0, -1.0}, 0.0), "");
+  const int n = 20000;
+  double sum = 0.0, sum_sq = 0.0;
+  bool seeds_differ = false;
+  for (int k = 1; k <= n; ++k) {
+    const double t = 1.0 + 0.01 * k;  // at the set-points since t = 0.1
+    for (auto* actuators : {&a, &b, &other_seed, &ideal}) actuators->update(t);
+    ASSERT_EQ(a.measuredVelocities(), b.measuredVelocities()) << "sample " << k;
+    seeds_differ = seeds_differ || a.measuredVelocities() != other_seed.measuredVelocities();
+    ASSERT_EQ(a.velocities(), ideal.velocities());
+    ASSERT_EQ(a.positions(), ideal.positions());
+    ASSERT_EQ(a.measuredPositions(), a.positions());
+    const double e = a.measuredVelocities()[0] - 2.0;
+    sum += e;
+    sum_sq += e * e;
+  }
+  EXPECT_TRUE(seeds_differ);
+  const double mean = sum / n;
+  const double std_dev = std::sqrt((sum_sq - n * mean * mean) / (n - 1));
+  EXPECT_NEAR(mean, 0.0, 4.0 * sigma / std::sqrt(n));
+  EXPECT_NEAR(std_dev, sigma, 4.0 * sigma / std::sqrt(2.0 * n));
+}
+
+// Explicit all-off models reproduce the ideal actuator bit for bit (and its closed forms), and
+// the measurement is the true state.
+TEST(SimulatedActuatorModels, AllOffIsTheIdealActuatorExactly) {
+  for (double dt : {0.001, 0.0137, 0.1, 0.4}) {
+    auto ideal = makeActuators(10.0, 20.0, 0.5);
+    auto off = makeModelled(ActuatorModel{}, 20.0, 0.5, 12345);
+    for (auto* actuators : {&ideal, &off})
+      ASSERT_EQ(actuators->command({"theta", "phi", "psi"}, {7.0, -2.5, 10.0}, 0.0), "");
+    double t = 0.0;
+    while (t < 2.0) {
+      t = std::min(t + dt, 2.0);
+      ideal.update(t);
+      off.update(t);
+      ASSERT_EQ(off.velocities(), ideal.velocities()) << "t " << t;
+      ASSERT_EQ(off.positions(), ideal.positions()) << "t " << t;
+      ASSERT_EQ(off.measuredVelocities(), off.velocities());
+      ASSERT_EQ(off.measuredPositions(), off.positions());
+      ASSERT_EQ(off.activeSetpoints(), off.setpoints());
+      if (t <= 0.5) {
+        EXPECT_NEAR(off.positions()[1], rampPosition(-2.5, 20.0, t), 1e-9);
+      }
+    }
+    // The watchdog's closed form: 7 rad/s by 0.35 s, held to 0.5, down by 0.85.
+    EXPECT_TRUE(off.timedOut());
+    EXPECT_EQ(off.velocities()[0], 0.0);
+    EXPECT_NEAR(off.positions()[0], 7.0 * 0.5, 1e-9);
+  }
+}
+
+TEST(SimulatedActuatorModels, BadModelValuesAreRejectedNamingActuatorAndField) {
+  const std::vector<std::string> names = {"theta", "phi"};
+  const std::vector<ActuatorLimits> limits(2, {10.0, 20.0});
+  auto error = [&](const std::vector<ActuatorModel>& models) {
+    try {
+      SimulatedActuators(names, limits, 0.5, models);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(error({}), "");
+  EXPECT_EQ(error({ActuatorModel{}, {0.1, 0.02, 0.001, 0.3}}), "");
+  EXPECT_TRUE(contains(error({ActuatorModel{}}), "1 model entries"));
+  for (double bad : {-1e-9, -2.0, kNaN, kInf, -kInf}) {
+    EXPECT_TRUE(contains(error({ActuatorModel{}, {bad, 0, 0, 0}}), "time_constant of 'phi'")) << bad;
+    EXPECT_TRUE(contains(error({{0, bad, 0, 0}, ActuatorModel{}}), "dead_time of 'theta'")) << bad;
+    EXPECT_TRUE(contains(error({ActuatorModel{}, {0, 0, bad, 0}}), "position_resolution of 'phi'"))
+        << bad;
+    EXPECT_TRUE(contains(error({{0, 0, 0, bad}, ActuatorModel{}}), "velocity_noise of 'theta'"))
+        << bad;
+  }
+  EXPECT_TRUE(contains(error({ActuatorModel{}, {-2.0, 0, 0, 0}}), "got -2"));
 }
 
 int main(int argc, char** argv) {

@@ -19,17 +19,38 @@ std::string joined(const std::vector<std::string>& names) {
   return out;
 }
 
+void requireNonNegative(double value, const std::string& what) {
+  requireFinite(value, what);
+  if (value < 0.0) {
+    std::ostringstream msg;
+    msg << what << " must be finite and >= 0, got " << value;
+    throw std::invalid_argument(msg.str());
+  }
+}
 
 }  // namespace
 
 SimulatedActuators::SimulatedActuators(std::vector<std::string> names,
-                                       std::vector<ActuatorLimits> limits, double command_timeout)
-    : names_(std::move(names)), limits_(std::move(limits)), command_timeout_(command_timeout) {
+                                       std::vector<ActuatorLimits> limits, double command_timeout,
+                                       std::vector<ActuatorModel> models,
+                                       std::uint32_t noise_seed)
+    : names_(std::move(names)),
+      limits_(std::move(limits)),
+      command_timeout_(command_timeout),
+      models_(std::move(models)),
+      noise_engine_(noise_seed) {
   if (names_.empty()) throw std::invalid_argument("SimulatedActuators: no actuator names given");
   if (limits_.size() != names_.size()) {
     std::ostringstream msg;
     msg << "SimulatedActuators: " << names_.size() << " actuator names (" << joined(names_)
         << ") but " << limits_.size() << " limit entries";
+    throw std::invalid_argument(msg.str());
+  }
+  if (models_.empty()) models_.assign(names_.size(), ActuatorModel{});
+  if (models_.size() != names_.size()) {
+    std::ostringstream msg;
+    msg << "SimulatedActuators: " << names_.size() << " actuator names (" << joined(names_)
+        << ") but " << models_.size() << " model entries";
     throw std::invalid_argument(msg.str());
   }
   std::unordered_set<std::string> seen;
@@ -44,11 +65,21 @@ SimulatedActuators::SimulatedActuators(std::vector<std::string> names,
     requirePositive(limits_[i].max_velocity, "SimulatedActuators: max_velocity" + of + " [rad/s]");
     requirePositive(limits_[i].max_acceleration,
                     "SimulatedActuators: max_acceleration" + of + " [rad/s^2]");
+    requireNonNegative(models_[i].time_constant, "SimulatedActuators: time_constant" + of + " [s]");
+    requireNonNegative(models_[i].dead_time, "SimulatedActuators: dead_time" + of + " [s]");
+    requireNonNegative(models_[i].position_resolution,
+                       "SimulatedActuators: position_resolution" + of + " [rad]");
+    requireNonNegative(models_[i].velocity_noise,
+                       "SimulatedActuators: velocity_noise" + of + " [rad/s]");
   }
   requirePositive(command_timeout_, "SimulatedActuators: command_timeout [s]");
   setpoints_.assign(names_.size(), 0.0);
+  active_setpoints_.assign(names_.size(), 0.0);
+  pending_.assign(names_.size(), {});
   velocities_.assign(names_.size(), 0.0);
   positions_.assign(names_.size(), 0.0);
+  measured_velocities_.assign(names_.size(), 0.0);
+  measured_positions_.assign(names_.size(), 0.0);
 }
 
 std::string SimulatedActuators::command(const std::vector<std::string>& names,
@@ -81,7 +112,12 @@ std::string SimulatedActuators::command(const std::vector<std::string>& names,
   update(t);
   for (std::size_t k = 0; k < names.size(); ++k) {
     const double limit = limits_[index[k]].max_velocity;
-    setpoints_[index[k]] = std::clamp(velocities[k], -limit, limit);
+    const std::size_t i = index[k];
+    setpoints_[i] = std::clamp(velocities[k], -limit, limit);
+    if (models_[i].dead_time > 0.0)
+      pending_[i].push_back({now_ + models_[i].dead_time, setpoints_[i]});
+    else
+      active_setpoints_[i] = setpoints_[i];
   }
   // now_ rather than t: a late-arriving command restarts the watchdog at the latest time seen.
   last_command_time_ = now_;
@@ -95,28 +131,63 @@ void SimulatedActuators::update(double t) {
   if (!clock_started_) {
     now_ = t;
     clock_started_ = true;
+    measure();
     return;
   }
   if (t <= now_) return;
-  if (has_command_ && !timed_out_) {
-    // The watchdog fires at its deadline, not at the next update, so the travel does not depend
-    // on the update rate. A command always restarts it at now_, hence deadline > now_ here.
+  // From event to event (a delayed set-point becoming active, the watchdog deadline), so that
+  // each takes effect at its own time, not at the next update, and the result does not depend on
+  // the update rate.
+  for (;;) {
+    double next = t;
+    // A command always restarts the watchdog at now_, hence deadline > now_ while it is armed.
+    const bool armed = has_command_ && !timed_out_;
     const double deadline = last_command_time_ + command_timeout_;
-    if (deadline <= t) {
-      integrate(deadline - now_);
-      now_ = deadline;
-      std::fill(setpoints_.begin(), setpoints_.end(), 0.0);
+    if (armed) next = std::min(next, deadline);
+    for (const auto& queue : pending_)
+      if (!queue.empty()) next = std::min(next, queue.front().time);
+    integrate(next - now_);
+    now_ = next;
+    for (std::size_t i = 0; i < names_.size(); ++i) {
+      while (!pending_[i].empty() && pending_[i].front().time <= now_) {
+        active_setpoints_[i] = pending_[i].front().value;
+        pending_[i].pop_front();
+      }
+    }
+    if (armed && deadline <= now_) {
+      zeroSetpoints();
       timed_out_ = true;
     }
+    if (now_ >= t) break;
   }
-  integrate(t - now_);
-  now_ = t;
+  measure();
 }
 
 void SimulatedActuators::stop(double t) {
   update(t);
-  std::fill(setpoints_.begin(), setpoints_.end(), 0.0);
+  zeroSetpoints();
   std::fill(velocities_.begin(), velocities_.end(), 0.0);
+  measure();
+}
+
+void SimulatedActuators::zeroSetpoints() {
+  std::fill(setpoints_.begin(), setpoints_.end(), 0.0);
+  std::fill(active_setpoints_.begin(), active_setpoints_.end(), 0.0);
+  for (auto& queue : pending_) queue.clear();
+}
+
+void SimulatedActuators::measure() {
+  for (std::size_t i = 0; i < names_.size(); ++i) {
+    const ActuatorModel& model = models_[i];
+    const double resolution = model.position_resolution;
+    measured_positions_[i] =
+        resolution > 0.0 ? resolution * std::round(positions_[i] / resolution) : positions_[i];
+    // Drawn only for noisy actuators, in index order: a fixed seed gives a fixed sequence.
+    measured_velocities_[i] =
+        model.velocity_noise > 0.0
+            ? velocities_[i] + model.velocity_noise * unit_normal_(noise_engine_)
+            : velocities_[i];
+  }
 }
 
 void SimulatedActuators::setEStop(bool engaged, double t) {
@@ -125,21 +196,47 @@ void SimulatedActuators::setEStop(bool engaged, double t) {
 }
 
 void SimulatedActuators::integrate(double dt) {
+  if (dt <= 0.0) return;
   for (std::size_t i = 0; i < names_.size(); ++i) {
     const double v0 = velocities_[i];
-    const double target = setpoints_[i];
+    const double target = active_setpoints_[i];
     const double a = limits_[i].max_acceleration;
+    const double tau = models_[i].time_constant;
     const double dv = target - v0;
-    if (std::abs(dv) <= a * dt) {
-      // Reaches the set-point after tau, then holds it: a trapezoid, then a rectangle.
-      const double tau = std::abs(dv) / a;
-      positions_[i] += 0.5 * (v0 + target) * tau + target * (dt - tau);
-      velocities_[i] = target;
-    } else {
-      const double v1 = v0 + std::copysign(a * dt, dv);
-      positions_[i] += 0.5 * (v0 + v1) * dt;
-      velocities_[i] = v1;
+    if (tau <= 0.0) {
+      if (std::abs(dv) <= a * dt) {
+        // Reaches the set-point after t_reach, then holds it: a trapezoid, then a rectangle.
+        const double t_reach = std::abs(dv) / a;
+        positions_[i] += 0.5 * (v0 + target) * t_reach + target * (dt - t_reach);
+        velocities_[i] = target;
+      } else {
+        const double v1 = v0 + std::copysign(a * dt, dv);
+        positions_[i] += 0.5 * (v0 + v1) * dt;
+        velocities_[i] = v1;
+      }
+      continue;
     }
+    // dv/dt = clamp((u - v) / tau, ±a): a constant-acceleration ramp while |u - v| > a tau, then
+    // the exponential approach, which never saturates again for a constant u.
+    double v = v0;
+    double rest = dt;
+    if (std::abs(dv) > a * tau) {
+      const double t_sat = (std::abs(dv) - a * tau) / a;
+      if (t_sat >= rest) {
+        const double v1 = v0 + std::copysign(a * rest, dv);
+        positions_[i] += 0.5 * (v0 + v1) * rest;
+        velocities_[i] = v1;
+        continue;
+      }
+      const double v1 = target - std::copysign(a * tau, dv);
+      positions_[i] += 0.5 * (v0 + v1) * t_sat;
+      v = v1;
+      rest -= t_sat;
+    }
+    // v(s) = u + (v - u) e^{-s/tau}; its integral is u s + (v - u) tau (1 - e^{-s/tau}).
+    const double one_minus_e = -std::expm1(-rest / tau);
+    positions_[i] += target * rest + (v - target) * tau * one_minus_e;
+    velocities_[i] = target + (v - target) * (1.0 - one_minus_e);
   }
 }
 

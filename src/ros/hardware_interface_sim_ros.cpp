@@ -1,5 +1,7 @@
 #include "spherical_robots/ros/hardware_interface_sim_ros.hpp"
 
+#include <algorithm>
+#include <cstdint>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -39,14 +41,75 @@ std::vector<std::string> readActuatorNames(const ros::NodeHandle& pnh) {
   return names;
 }
 
+const std::vector<std::string> kModelFields = {"time_constant", "dead_time",
+                                               "position_resolution", "velocity_noise"};
+
+/// A finite number >= 0, 0 when absent.
+double nonNegativeParam(const ros::NodeHandle& pnh, const std::string& name) {
+  const double value = numberParam(pnh, name, 0.0);
+  if (value < 0.0) {
+    std::ostringstream problem;
+    problem << "must be finite and >= 0, got " << value;
+    throw badParameter(pnh, name, problem.str());
+  }
+  return value;
+}
+
+/// ~models/<name>/<field>, every field optional (0: off). A key under ~models that is not an
+/// actuator name or not a known field is an error, so that a typo does not silently do nothing.
+std::vector<hardware::ActuatorModel> readModels(const ros::NodeHandle& pnh,
+                                                const std::vector<std::string>& names) {
+  XmlRpc::XmlRpcValue value;
+  if (pnh.getParam("models", value)) {
+    if (value.getType() != XmlRpc::XmlRpcValue::TypeStruct)
+      throw badParameter(pnh, "models",
+                         "must be a dictionary actuator name -> model, got " + describe(value));
+    for (auto it = value.begin(); it != value.end(); ++it) {
+      if (std::find(names.begin(), names.end(), it->first) == names.end())
+        throw badParameter(pnh, "models/" + it->first, "names no actuator in actuator_names");
+      if (it->second.getType() != XmlRpc::XmlRpcValue::TypeStruct)
+        throw badParameter(pnh, "models/" + it->first,
+                           "must be a dictionary field -> value, got " + describe(it->second));
+      for (auto field = it->second.begin(); field != it->second.end(); ++field)
+        if (std::find(kModelFields.begin(), kModelFields.end(), field->first) ==
+            kModelFields.end())
+          throw badParameter(pnh, "models/" + it->first + "/" + field->first,
+                             "is not a model field (time_constant, dead_time, "
+                             "position_resolution, velocity_noise)");
+    }
+  }
+  std::vector<hardware::ActuatorModel> models;
+  for (const auto& name : names) {
+    const std::string prefix = "models/" + name + "/";
+    hardware::ActuatorModel model;
+    model.time_constant = nonNegativeParam(pnh, prefix + "time_constant");
+    model.dead_time = nonNegativeParam(pnh, prefix + "dead_time");
+    model.position_resolution = nonNegativeParam(pnh, prefix + "position_resolution");
+    model.velocity_noise = nonNegativeParam(pnh, prefix + "velocity_noise");
+    models.push_back(model);
+  }
+  return models;
+}
+
+std::uint32_t readNoiseSeed(const ros::NodeHandle& pnh) {
+  XmlRpc::XmlRpcValue value;
+  if (!pnh.getParam("noise_seed", value)) return 0;
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeInt || static_cast<int>(value) < 0)
+    throw badParameter(pnh, "noise_seed", "must be an integer >= 0, got " + describe(value));
+  return static_cast<std::uint32_t>(static_cast<int>(value));
+}
+
 hardware::SimulatedActuators makeActuators(const ros::NodeHandle& pnh) {
   const std::vector<std::string> names = readActuatorNames(pnh);
   const hardware::ActuatorLimits limits{positiveParam(pnh, "max_velocity", 20.0),
                                         positiveParam(pnh, "max_acceleration", 50.0)};
   const double command_timeout = positiveParam(pnh, "command_timeout", 0.5);
+  const std::vector<hardware::ActuatorModel> models = readModels(pnh, names);
+  const std::uint32_t noise_seed = readNoiseSeed(pnh);
   try {
     return hardware::SimulatedActuators(
-        names, std::vector<hardware::ActuatorLimits>(names.size(), limits), command_timeout);
+        names, std::vector<hardware::ActuatorLimits>(names.size(), limits), command_timeout,
+        models, noise_seed);
   } catch (const std::invalid_argument& e) {
     // The numbers are checked above, so what is left is the names (empty or duplicate).
     throw badParameter(pnh, "actuator_names", std::string("is invalid: ") + e.what());
@@ -78,6 +141,15 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
            "command timeout %g s, publishing %s at %g Hz",
            actuators_.names().size(), limits.max_velocity, limits.max_acceleration,
            actuators_.commandTimeout(), state_pub_.getTopic().c_str(), rate);
+  for (std::size_t i = 0; i < actuators_.names().size(); ++i) {
+    const auto& model = actuators_.models()[i];
+    if (model.time_constant > 0.0 || model.dead_time > 0.0 || model.position_resolution > 0.0 ||
+        model.velocity_noise > 0.0)
+      ROS_INFO("hardware_interface_sim: actuator %s: time constant %g s, dead time %g s, "
+               "position resolution %g rad, velocity noise %g rad/s",
+               actuators_.names()[i].c_str(), model.time_constant, model.dead_time,
+               model.position_resolution, model.velocity_noise);
+  }
 }
 
 void HardwareInterfaceSimRos::commandCallback(const sensor_msgs::JointState::ConstPtr& msg) {
@@ -119,8 +191,9 @@ void HardwareInterfaceSimRos::timerCallback(const ros::TimerEvent&) {
 
 void HardwareInterfaceSimRos::publishState(const ros::Time& stamp) {
   state_msg_.header.stamp = stamp;
-  state_msg_.position = actuators_.positions();
-  state_msg_.velocity = actuators_.velocities();
+  // The measurement (quantised, noisy if so configured), not the true state.
+  state_msg_.position = actuators_.measuredPositions();
+  state_msg_.velocity = actuators_.measuredVelocities();
   state_pub_.publish(state_msg_);
 }
 

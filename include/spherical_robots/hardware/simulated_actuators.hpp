@@ -1,9 +1,14 @@
 #pragma once
 // What real velocity-controlled actuators do to their set-points, without ROS: velocity and
 // acceleration limits, a command-timeout watchdog that brings them to rest when commands stop,
-// and an e-stop latch. The state is advanced exactly (piecewise-constant acceleration), so the
-// result does not depend on how often update() is called.
+// and an e-stop latch; optionally (ActuatorModel, all off by default) a first-order lag, a dead
+// time, encoder quantisation and velocity measurement noise. The true state is advanced exactly
+// (closed form between events), so it does not depend on how often update() is called; the
+// reported measurement (quantisation, noise) is derived from it and never fed back.
 
+#include <cstdint>
+#include <deque>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -12,6 +17,21 @@ namespace spherical_robots::hardware {
 struct ActuatorLimits {
   double max_velocity = 10.0;      ///< |rate| limit [rad/s], finite and > 0
   double max_acceleration = 20.0;  ///< |d rate/dt| limit [rad/s^2], finite and > 0
+};
+
+/// Non-ideal behaviour of one actuator. Every field is finite and >= 0; 0 switches it off, and all
+/// of them 0 (the default) is the ideal actuator (only ActuatorLimits and the watchdog act).
+struct ActuatorModel {
+  /// First-order lag [s]: dv/dt = clamp((u - v) / time_constant, ±max_acceleration), u the active
+  /// set-point. 0: v ramps to u at exactly max_acceleration (the lag's limit as tau -> 0).
+  double time_constant = 0.0;
+  /// [s] an accepted set-point becomes active this long after it was commanded (the watchdog and
+  /// the e-stop are not delayed).
+  double dead_time = 0.0;
+  /// [rad] the reported position is the true one rounded to a multiple of this.
+  double position_resolution = 0.0;
+  /// [rad/s] standard deviation of the Gaussian noise added to the reported velocity.
+  double velocity_noise = 0.0;
 };
 
 /// A set of velocity-controlled actuators. Times are in seconds on any monotonic clock (the node
@@ -23,28 +43,37 @@ class SimulatedActuators {
   /// @param limits one entry per name.
   /// @param command_timeout [s], finite and > 0: with no accepted command for this long the
   ///        set-points become 0 and the actuators ramp to rest under their acceleration limits.
+  /// @param models one entry per name, or empty: every actuator ideal.
+  /// @param noise_seed seeds the std::mt19937 of the velocity noise: the same seed and the same
+  ///        sequence of calls give the same measurements.
   /// @throw std::invalid_argument naming the offending argument and value: empty or duplicate
-  ///        names, a size mismatch, non-positive or non-finite limits or timeout.
+  ///        names, a size mismatch, non-positive or non-finite limits or timeout, negative or
+  ///        non-finite model fields (naming actuator and field).
   SimulatedActuators(std::vector<std::string> names, std::vector<ActuatorLimits> limits,
-                     double command_timeout);
+                     double command_timeout, std::vector<ActuatorModel> models = {},
+                     std::uint32_t noise_seed = 0);
 
   /// Accepts rate set-points [rad/s] by actuator name at time t [s]. The state is first advanced
   /// to t with the previous set-points; each set-point is then clamped to ±max_velocity and the
-  /// watchdog restarts at t. Names not mentioned keep their set-point.
+  /// watchdog restarts at t. Names not mentioned keep their set-point. With a dead time the
+  /// set-point becomes active dead_time after t (activeSetpoints()); setpoints() shows it at once.
   /// @return an empty string if accepted, else the reason (e-stop engaged, no names, names/values
   ///         size mismatch, unknown or duplicate name, non-finite value or time). A rejected
   ///         command changes nothing, not even the watchdog or the clock.
   std::string command(const std::vector<std::string>& names, const std::vector<double>& velocities,
                       double t);
 
-  /// Advances the measured state to time t [s]: velocities ramp towards the set-points at exactly
-  /// max_acceleration, positions [rad] integrate the velocities, and at the watchdog deadline
-  /// (last accepted command + command_timeout) the set-points become 0. A non-finite t or one
-  /// earlier than the latest time seen is ignored.
+  /// Advances the state to time t [s]: velocities ramp towards the active set-points at exactly
+  /// max_acceleration (or follow them through the lag), positions [rad] integrate the velocities,
+  /// delayed set-points become active at their time, and at the watchdog deadline (last accepted
+  /// command + command_timeout) every set-point, active and pending, becomes 0. A new measurement
+  /// is taken when the clock starts or advances. A non-finite t or one not later than the latest
+  /// time seen is ignored.
   void update(double t);
 
   /// Brings everything to rest now (after advancing to t [s], if t is later than the latest time
-  /// seen): set-points and velocities become 0 at once, positions hold, until the next command.
+  /// seen): set-points (pending ones too) and velocities become 0 at once, positions hold, until
+  /// the next command. A new measurement is taken.
   void stop(double t);
 
   /// Engages (stop(t), then every command is rejected) or releases the e-stop latch. Releasing
@@ -53,10 +82,23 @@ class SimulatedActuators {
 
   const std::vector<std::string>& names() const { return names_; }
   const std::vector<ActuatorLimits>& limits() const { return limits_; }
+  const std::vector<ActuatorModel>& models() const { return models_; }
   double commandTimeout() const { return command_timeout_; }
+  /// The latest time seen [s] (0 before the first).
+  double now() const { return now_; }
+  /// True state, used for the integration.
   const std::vector<double>& velocities() const { return velocities_; }  ///< [rad/s]
   const std::vector<double>& positions() const { return positions_; }    ///< [rad], from 0
-  const std::vector<double>& setpoints() const { return setpoints_; }    ///< clamped [rad/s]
+  /// The reported measurement, taken at the latest update() or stop(): the true position rounded
+  /// to position_resolution, the true velocity plus noise (not differenced from the quantised
+  /// positions, so it does not depend on the update rate). Equal to the true state when the
+  /// model is off.
+  const std::vector<double>& measuredVelocities() const { return measured_velocities_; }
+  const std::vector<double>& measuredPositions() const { return measured_positions_; }
+  /// Latest accepted set-points, clamped [rad/s].
+  const std::vector<double>& setpoints() const { return setpoints_; }
+  /// The set-points the actuators follow now: setpoints() delayed by the dead time [rad/s].
+  const std::vector<double>& activeSetpoints() const { return active_setpoints_; }
   /// True from the watchdog deadline until the next accepted command.
   bool timedOut() const { return timed_out_; }
   bool eStopped() const { return e_stopped_; }
@@ -64,15 +106,31 @@ class SimulatedActuators {
   bool hasCommand() const { return has_command_; }
 
  private:
-  /// Advances velocities and positions by dt [s] >= 0 towards the current set-points.
+  struct Pending {
+    double time;   ///< [s] when it becomes active
+    double value;  ///< clamped set-point [rad/s]
+  };
+
+  /// Advances velocities and positions by dt [s] >= 0 towards the active set-points.
   void integrate(double dt);
+  /// Sets every set-point, active and pending, to 0.
+  void zeroSetpoints();
+  /// Recomputes the measurement from the true state, drawing fresh noise.
+  void measure();
 
   std::vector<std::string> names_;
   std::vector<ActuatorLimits> limits_;
   double command_timeout_;
+  std::vector<ActuatorModel> models_;
   std::vector<double> setpoints_;
+  std::vector<double> active_setpoints_;
+  std::vector<std::deque<Pending>> pending_;  ///< per actuator, in time order
   std::vector<double> velocities_;
   std::vector<double> positions_;
+  std::vector<double> measured_velocities_;
+  std::vector<double> measured_positions_;
+  std::mt19937 noise_engine_;
+  std::normal_distribution<double> unit_normal_{0.0, 1.0};
   double last_command_time_ = 0.0;
   double now_ = 0.0;  ///< latest time seen [s]; meaningless until clock_started_
   bool clock_started_ = false;

@@ -18,7 +18,9 @@ class HardwareInterfaceSimRos {
  public:
   /// @param nh the stack's namespace: topics actuators/command, actuators/state, e_stop.
   /// @param pnh the node's private namespace: parameters actuator_names, max_velocity [rad/s],
-  ///        max_acceleration [rad/s^2], command_timeout [s], rate [Hz].
+  ///        max_acceleration [rad/s^2], command_timeout [s], rate [Hz]; optional actuator models
+  ///        models/<name>/{time_constant, dead_time, position_resolution, velocity_noise} and
+  ///        noise_seed (docs/hardware_interface.md), all off by default.
   /// @throw std::invalid_argument on a missing or malformed parameter, naming it and its value.
   HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHandle pnh);
 
