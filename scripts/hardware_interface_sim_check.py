@@ -41,7 +41,7 @@ class HardwareInterfaceSimCheck(unittest.TestCase):
         cls.states = []
         cls.status = None
         cls.command_pub = rospy.Publisher('actuators/command', JointState, queue_size=10)
-        cls.e_stop_pub = rospy.Publisher('e_stop', Bool, queue_size=10)
+        cls.e_stop_pub = rospy.Publisher('estop', Bool, queue_size=10)
         rospy.Subscriber('actuators/state', JointState, cls.onState, queue_size=100)
         rospy.Subscriber('/diagnostics', DiagnosticArray, cls.onDiagnostics, queue_size=10)
         deadline = time.time() + 30.0

@@ -131,7 +131,7 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
   state_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/state", 10);
   command_sub_ =
       nh.subscribe("actuators/command", 10, &HardwareInterfaceSimRos::commandCallback, this);
-  e_stop_sub_ = nh.subscribe("e_stop", 10, &HardwareInterfaceSimRos::eStopCallback, this);
+  e_stop_sub_ = nh.subscribe("estop", 10, &HardwareInterfaceSimRos::eStopCallback, this);
   // A ros::Timer (not a WallTimer) so the actuators follow simulated time under /use_sim_time.
   timer_ =
       nh.createTimer(ros::Duration(1.0 / rate), &HardwareInterfaceSimRos::timerCallback, this);

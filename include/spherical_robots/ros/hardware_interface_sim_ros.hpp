@@ -16,7 +16,7 @@ namespace spherical_robots {
 /// Callbacks are meant for one spinner thread (ros::spin): they share the actuators unguarded.
 class HardwareInterfaceSimRos {
  public:
-  /// @param nh the stack's namespace: topics actuators/command, actuators/state, e_stop.
+  /// @param nh the stack's namespace: topics actuators/command, actuators/state, estop.
   /// @param pnh the node's private namespace: parameters actuator_names, max_velocity [rad/s],
   ///        max_acceleration [rad/s^2], command_timeout [s], rate [Hz]; optional actuator models
   ///        models/<name>/{time_constant, dead_time, position_resolution, velocity_noise} and
