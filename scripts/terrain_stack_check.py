@@ -16,10 +16,11 @@ import rosnode
 import rospy
 import rostest
 import tf2_ros
-from diagnostic_msgs.msg import DiagnosticArray
+from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
 from geometry_msgs.msg import Twist, Vector3
 from nav_msgs.msg import Odometry, Path
 from sensor_msgs.msg import JointState
+from std_msgs.msg import Bool
 
 from spherical_robots.msg import TerrainState, TrackingError
 
@@ -27,6 +28,7 @@ PKG = 'spherical_robots'
 NAME = 'terrain_stack_check'
 WALL_DEADLINE = 120.0          # [s] wall, for anything the stack should do in time
 SETTLE = (40.0, 60.0)          # [s] simulated window in which tracking has converged
+SLACK = 0.5                    # [s] simulated: message latency at 10x real time (50 ms of wall)
 PLANT_STATUS = 'terrain_kinematics: terrain plant'
 CONTROLLER_STATUS = 'pure_pursuit_controller: pure pursuit controller'
 NODES = ['terrain_kinematics', 'pure_pursuit_controller', 'hardware_interface',
@@ -56,6 +58,11 @@ class Recorder:
     def since(self, index):
         with self.lock:
             return [msg for _, msg in self.messages[index:]]
+
+    def timed_since(self, t):
+        """(arrival time, message) pairs that arrived at simulated time t or later."""
+        with self.lock:
+            return [(at, msg) for at, msg in self.messages if at >= t]
 
 
 def wait_until(condition, what, timeout=WALL_DEADLINE):
@@ -89,6 +96,22 @@ def publish_until(publisher, messages, condition, what):
         for msg in messages:
             publisher.publish(msg)
         time.sleep(0.2)
+
+
+def tracking_in_window(errors):
+    """Mean and max |e_t| over the simulated SETTLE window after the first tracking_error."""
+    wait_until(lambda: errors.count() > 0, 'the first tracking_error message')
+    start = errors.since(0)[0].header.stamp.to_sec()
+    wait_until(lambda: errors.last().header.stamp.to_sec() - start > SETTLE[1],
+               '%.0f s of simulated tracking' % SETTLE[1])
+    window = [m.error_norm for m in errors.since(0)
+              if SETTLE[0] <= m.header.stamp.to_sec() - start <= SETTLE[1]]
+    if len(window) <= 200:
+        raise AssertionError('too few tracking_error messages in the window: %d' % len(window))
+    mean, worst = sum(window) / len(window), max(window)
+    rospy.loginfo('|e_t| over simulated t in [%g, %g] s: mean %.4f m, max %.4f m, %d samples',
+                  SETTLE[0], SETTLE[1], mean, worst, len(window))
+    return mean, worst
 
 
 class StackFixture(unittest.TestCase):
@@ -203,16 +226,7 @@ class TrackingCheck(StackFixture):
                                        delta=1e-9)
 
     def test_05_tracking_converges(self):
-        wait_until(lambda: self.errors.count() > 0, 'the first tracking_error message')
-        start = self.errors.since(0)[0].header.stamp.to_sec()
-        wait_until(lambda: self.errors.last().header.stamp.to_sec() - start > SETTLE[1],
-                   '%.0f s of simulated tracking' % SETTLE[1])
-        window = [m.error_norm for m in self.errors.since(0)
-                  if SETTLE[0] <= m.header.stamp.to_sec() - start <= SETTLE[1]]
-        self.assertGreater(len(window), 200, 'too few tracking_error messages in the window')
-        mean, worst = sum(window) / len(window), max(window)
-        rospy.loginfo('|e_t| over simulated t in [%g, %g] s: mean %.4f m, max %.4f m, %d samples',
-                      SETTLE[0], SETTLE[1], mean, worst, len(window))
+        mean, worst = tracking_in_window(self.errors)
         self.assertLess(mean, 0.1)
         self.assertLess(worst, 0.2)
 
@@ -284,7 +298,90 @@ class TeleopCheck(StackFixture):
         self.check_rejected_actuator_state()
 
 
+class SeamCheck(StackFixture):
+    """mode:=seam: the hardware-interface seam inside a running stack (docs/hardware_interface.md),
+    whichever implementation of the contract the stack started (hardware:=sim | loopback). Private
+    params: ~mean_bound, ~max_bound [m] for |e_t| over the SETTLE window; ~safety (bool) also
+    engages the e-stop mid-run and then kills the controller to fire the watchdog, which needs
+    ideal measurements (exact zeros: no noise model)."""
+
+    @classmethod
+    def setUpClass(cls):
+        super().setUpClass()
+        cls.errors = Recorder('tracking_error', TrackingError)
+        cls.commands = Recorder('actuators/command', JointState)
+        cls.e_stop_pub = rospy.Publisher('estop', Bool, queue_size=1, latch=True)
+        hardware = rospy.resolve_name('hardware_interface')
+        cls.status_suffix = hardware.lstrip('/') + ': actuators'
+        cls.timeout = float(rospy.get_param(hardware + '/command_timeout'))
+        cls.max_acceleration = float(rospy.get_param(hardware + '/max_acceleration'))
+        cls.period = 1.0 / float(rospy.get_param(hardware + '/rate'))
+
+    def status_level(self):
+        for array in reversed(self.diagnostics.since(0)):
+            for status in array.status:
+                if status.name == self.status_suffix:
+                    return status.level, status.message
+        return None, None
+
+    def first_state_at_rest_since(self, t):
+        """The first actuators/state stamped at or after t with every velocity exactly 0."""
+        for _, msg in self.actuators.timed_since(t):
+            if msg.header.stamp.to_sec() >= t and all(v == 0.0 for v in msg.velocity):
+                return msg
+        return None
+
+    def test_01_tracks_within_bounds(self):
+        mean, worst = tracking_in_window(self.errors)
+        self.assertLess(mean, float(rospy.get_param('~mean_bound')))
+        self.assertLess(worst, float(rospy.get_param('~max_bound')))
+
+    def test_02_e_stop_mid_run(self):
+        if not rospy.get_param('~safety', False):
+            self.skipTest('~safety is false (actuator models with noise: no exact zeros)')
+        self.assertTrue(any(v != 0.0 for v in self.actuators.last().velocity), 'not moving')
+        engaged = rospy.Time.now().to_sec()
+        self.e_stop_pub.publish(Bool(data=True))
+        # Stopped at once (not ramped): the first state at rest is the one sent on the e-stop, a
+        # few ms of wall time later, i.e. within SLACK of simulated time at 10x.
+        wait_until(lambda: self.first_state_at_rest_since(engaged) is not None, 'the e-stop')
+        stopped = self.first_state_at_rest_since(engaged).header.stamp.to_sec()
+        rospy.loginfo('e-stop: at rest %.3f s (simulated) after it was published',
+                      stopped - engaged)
+        self.assertLess(stopped - engaged, self.period + SLACK)
+        wait_until(lambda: self.status_level()[0] == DiagnosticStatus.ERROR,
+                   'an ERROR on /diagnostics for the e-stop')
+        # Held while engaged, though the controller keeps commanding.
+        sim_sleep(1.0)
+        self.assertTrue(all(v == 0.0 for v in self.actuators.last().velocity))
+        self.e_stop_pub.publish(Bool(data=False))
+        wait_until(lambda: any(v != 0.0 for v in self.actuators.last().velocity),
+                   'the controller to drive again after the release')
+
+    def test_03_watchdog_when_controller_dies(self):
+        if not rospy.get_param('~safety', False):
+            self.skipTest('~safety is false (actuator models with noise: no exact zeros)')
+        sim_sleep(2.0)
+        speed = max(abs(v) for v in self.actuators.last().velocity)
+        self.assertGreater(speed, 0.0, 'not moving before the controller is stopped')
+        controller = rospy.resolve_name('pure_pursuit_controller')
+        rosnode.kill_nodes([controller])
+        wait_until(lambda: not rosnode.rosnode_ping(controller, max_count=1), 'the controller to die')
+        last_command = self.commands.timed_since(0)[-1][0]
+        bound = self.timeout + speed / self.max_acceleration + self.period
+        wait_until(lambda: self.first_state_at_rest_since(last_command) is not None,
+                   'the watchdog to bring every actuator to rest')
+        at_rest = self.first_state_at_rest_since(last_command).header.stamp.to_sec()
+        rospy.loginfo('watchdog: at rest %.3f s (simulated) after the last command; bound '
+                      'timeout + |v|/a + one period = %.3f s', at_rest - last_command, bound)
+        self.assertLess(at_rest - last_command, bound + SLACK)
+        self.assertGreater(at_rest - last_command, self.timeout - SLACK, 'watchdog fired early')
+        wait_until(lambda: self.status_level()[0] == DiagnosticStatus.WARN and
+                   'command timeout' in self.status_level()[1],
+                   'a command-timeout WARN on /diagnostics')
+
+
 if __name__ == '__main__':
     rospy.init_node(NAME)
     mode = rospy.get_param('~mode', 'tracking')
-    rostest.rosrun(PKG, NAME, TeleopCheck if mode == 'teleop' else TrackingCheck)
+    rostest.rosrun(PKG, NAME, {'teleop': TeleopCheck, 'seam': SeamCheck}.get(mode, TrackingCheck))

@@ -44,9 +44,9 @@ std::vector<std::string> readActuatorNames(const ros::NodeHandle& pnh) {
 const std::vector<std::string> kModelFields = {"time_constant", "dead_time",
                                                "position_resolution", "velocity_noise"};
 
-/// A finite number >= 0, 0 when absent.
-double nonNegativeParam(const ros::NodeHandle& pnh, const std::string& name) {
-  const double value = numberParam(pnh, name, 0.0);
+/// A finite number >= 0, fallback when absent.
+double nonNegativeParam(const ros::NodeHandle& pnh, const std::string& name, double fallback) {
+  const double value = numberParam(pnh, name, fallback);
   if (value < 0.0) {
     std::ostringstream problem;
     problem << "must be finite and >= 0, got " << value;
@@ -55,11 +55,36 @@ double nonNegativeParam(const ros::NodeHandle& pnh, const std::string& name) {
   return value;
 }
 
-/// ~models/<name>/<field>, every field optional (0: off). A key under ~models that is not an
-/// actuator name or not a known field is an error, so that a typo does not silently do nothing.
+/// The dictionary at key must hold model fields only, so that a typo does not silently do nothing.
+void requireModelFields(const ros::NodeHandle& pnh, const std::string& key,
+                        const XmlRpc::XmlRpcValue& value) {
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeStruct)
+    throw badParameter(pnh, key, "must be a dictionary field -> value, got " + describe(value));
+  for (auto field = value.begin(); field != value.end(); ++field)
+    if (std::find(kModelFields.begin(), kModelFields.end(), field->first) == kModelFields.end())
+      throw badParameter(pnh, key + "/" + field->first,
+                         "is not a model field (time_constant, dead_time, "
+                         "position_resolution, velocity_noise)");
+}
+
+hardware::ActuatorModel readModel(const ros::NodeHandle& pnh, const std::string& key,
+                                  const hardware::ActuatorModel& fallback) {
+  hardware::ActuatorModel model;
+  model.time_constant = nonNegativeParam(pnh, key + "/time_constant", fallback.time_constant);
+  model.dead_time = nonNegativeParam(pnh, key + "/dead_time", fallback.dead_time);
+  model.position_resolution =
+      nonNegativeParam(pnh, key + "/position_resolution", fallback.position_resolution);
+  model.velocity_noise = nonNegativeParam(pnh, key + "/velocity_noise", fallback.velocity_noise);
+  return model;
+}
+
+/// ~default_model/<field> for every actuator, overridden field by field by
+/// ~models/<name>/<field>; every field optional (0: off). A key under ~models that is not an
+/// actuator name is an error, like an unknown field.
 std::vector<hardware::ActuatorModel> readModels(const ros::NodeHandle& pnh,
                                                 const std::vector<std::string>& names) {
   XmlRpc::XmlRpcValue value;
+  if (pnh.getParam("default_model", value)) requireModelFields(pnh, "default_model", value);
   if (pnh.getParam("models", value)) {
     if (value.getType() != XmlRpc::XmlRpcValue::TypeStruct)
       throw badParameter(pnh, "models",
@@ -67,27 +92,12 @@ std::vector<hardware::ActuatorModel> readModels(const ros::NodeHandle& pnh,
     for (auto it = value.begin(); it != value.end(); ++it) {
       if (std::find(names.begin(), names.end(), it->first) == names.end())
         throw badParameter(pnh, "models/" + it->first, "names no actuator in actuator_names");
-      if (it->second.getType() != XmlRpc::XmlRpcValue::TypeStruct)
-        throw badParameter(pnh, "models/" + it->first,
-                           "must be a dictionary field -> value, got " + describe(it->second));
-      for (auto field = it->second.begin(); field != it->second.end(); ++field)
-        if (std::find(kModelFields.begin(), kModelFields.end(), field->first) ==
-            kModelFields.end())
-          throw badParameter(pnh, "models/" + it->first + "/" + field->first,
-                             "is not a model field (time_constant, dead_time, "
-                             "position_resolution, velocity_noise)");
+      requireModelFields(pnh, "models/" + it->first, it->second);
     }
   }
+  const hardware::ActuatorModel default_model = readModel(pnh, "default_model", {});
   std::vector<hardware::ActuatorModel> models;
-  for (const auto& name : names) {
-    const std::string prefix = "models/" + name + "/";
-    hardware::ActuatorModel model;
-    model.time_constant = nonNegativeParam(pnh, prefix + "time_constant");
-    model.dead_time = nonNegativeParam(pnh, prefix + "dead_time");
-    model.position_resolution = nonNegativeParam(pnh, prefix + "position_resolution");
-    model.velocity_noise = nonNegativeParam(pnh, prefix + "velocity_noise");
-    models.push_back(model);
-  }
+  for (const auto& name : names) models.push_back(readModel(pnh, "models/" + name, default_model));
   return models;
 }
 

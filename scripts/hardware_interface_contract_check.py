@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
-"""rostest of hardware_interface_sim: one test method per safety behaviour, in the spirit of
-diff_drive_controller's rostests.
+"""rostest of the hardware-interface contract (docs/hardware_interface.md): one test method per
+safety behaviour, in the spirit of diff_drive_controller's rostests. It runs against
+hardware_interface_sim (test/hardware_interface_sim.test) and, unchanged, against the independent
+loopback driver scripts/loopback_hardware.py (test/hardware_loopback.test): any implementation of
+the contract must pass it.
 
-Runs in the node's namespace (test/hardware_interface_sim.test) and reads the node's limits from
-its private parameters; ~node names the node (relative). Wall time, with generous timing bounds:
+Runs in the node's namespace and reads the node's limits from its private parameters; ~node names
+the node (relative), ~node_type its executable (for the start-up checks). Wall time, with generous timing bounds:
 the checks that can be made exact (no intermediate velocities after an e-stop, acceleration between
 consecutive stamps) are exact, the others allow SLACK seconds of scheduling noise.
 """
@@ -259,8 +262,9 @@ class HardwareInterfaceSimCheck(unittest.TestCase):
         self.reach(moving)
 
     def test_malformed_parameters_fail_at_startup(self):
-        node = roslib.packages.find_node(PKG, 'hardware_interface_sim_node')
-        self.assertTrue(node, 'hardware_interface_sim_node not found')
+        node_type = rospy.get_param('~node_type', 'hardware_interface_sim_node')
+        node = roslib.packages.find_node(PKG, node_type)
+        self.assertTrue(node, node_type + ' not found')
         base = {'actuator_names': ['theta', 'phi'], 'max_velocity': 5.0}
         cases = [
             ('missing_names', {'max_velocity': 5.0}, 'actuator_names'),

@@ -1,0 +1,204 @@
+#!/usr/bin/env python3
+"""A second, independent implementation of the hardware-interface contract
+(docs/hardware_interface.md), written from the document alone and sharing no code with
+hardware_interface_sim: rate set-points on `actuators/command` are followed by ideal actuators
+(velocity and acceleration limits, nothing else) and looped back as measured states on
+`actuators/state`, with the command-timeout watchdog, the latched `estop` and the rejection
+rules of the contract. It is what a minimal real driver looks like, and the stacks' rostests run
+with it in place of hardware_interface_sim (`hardware:=loopback`) to show that nothing else
+depends on the simulated one.
+
+Private parameters, as hardware_interface_sim's: actuator_names (required), max_velocity [rad/s],
+max_acceleration [rad/s^2], command_timeout [s], rate [Hz], diagnostic_period [s]; models_file
+must be empty (there are no actuator models here). A missing or
+malformed one is fatal at start-up (exit status 1, the message naming node and parameter).
+"""
+import math
+import sys
+import threading
+
+import diagnostic_updater
+import rospy
+from diagnostic_msgs.msg import DiagnosticStatus
+from sensor_msgs.msg import JointState
+from std_msgs.msg import Bool
+
+
+class ParameterError(Exception):
+    pass
+
+
+def positive_parameter(name, default):
+    value = rospy.get_param('~' + name, default)
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ParameterError('parameter %s: %r is not a number' % (rospy.resolve_name('~' + name),
+                                                                   value))
+    if not math.isfinite(value) or value <= 0.0:
+        raise ParameterError('parameter %s: %r must be finite and > 0'
+                             % (rospy.resolve_name('~' + name), value))
+    return float(value)
+
+
+def actuator_names():
+    key = rospy.resolve_name('~actuator_names')
+    if not rospy.has_param(key):
+        raise ParameterError('parameter %s is required (a list of actuator names)' % key)
+    names = rospy.get_param(key)
+    if (not isinstance(names, list) or not names
+            or not all(isinstance(n, str) and n for n in names)):
+        raise ParameterError('parameter %s: %r is not a non-empty list of names' % (key, names))
+    if len(set(names)) != len(names):
+        raise ParameterError('parameter %s: %r names an actuator twice' % (key, names))
+    return names
+
+
+class LoopbackHardware:
+
+    def __init__(self):
+        self.names = actuator_names()
+        self.max_velocity = positive_parameter('max_velocity', 20.0)
+        self.max_acceleration = positive_parameter('max_acceleration', 50.0)
+        self.timeout = positive_parameter('command_timeout', 0.5)
+        rate = positive_parameter('rate', 100.0)
+        models_file = rospy.get_param('~models_file', '')
+        if models_file:
+            raise ParameterError('parameter %s: %r: the loopback driver has ideal actuators and '
+                                 'no models; use hardware:=sim for actuator models'
+                                 % (rospy.resolve_name('~models_file'), models_file))
+
+        count = len(self.names)
+        self.lock = threading.Lock()
+        self.setpoints = [0.0] * count
+        self.velocities = [0.0] * count
+        self.positions = [0.0] * count
+        self.last_update = None
+        self.last_accepted = None  # ROS time of the last accepted command
+        self.timed_out = False
+        self.e_stopped = False
+        self.accepted = 0
+        self.rejected = 0
+        self.last_rejection = 'none'
+
+        self.updater = diagnostic_updater.Updater()
+        self.updater.setHardwareID('loopback')
+        self.updater.add('actuators', self.diagnose)
+        self.state_pub = rospy.Publisher('actuators/state', JointState, queue_size=10)
+        rospy.Subscriber('actuators/command', JointState, self.on_command, queue_size=10)
+        rospy.Subscriber('estop', Bool, self.on_e_stop, queue_size=10)
+        self.timer = rospy.Timer(rospy.Duration(1.0 / rate), self.on_timer)
+
+    def advance(self, now):
+        """Moves every velocity towards its set-point at max_acceleration and integrates the
+        positions (trapezoid) up to now; the watchdog zeroes the set-points at its deadline."""
+        if self.last_update is None:
+            self.last_update = now
+            return
+        if (self.last_accepted is not None and not self.timed_out
+                and now - self.last_accepted > self.timeout):
+            self.setpoints = [0.0] * len(self.names)
+            self.timed_out = True
+            rospy.logwarn('loopback hardware: no command for %g s: actuators brought to rest',
+                          self.timeout)
+        dt = max(0.0, now - self.last_update)
+        step = self.max_acceleration * dt
+        for i, target in enumerate(self.setpoints):
+            before = self.velocities[i]
+            after = before + max(-step, min(step, target - before))
+            self.positions[i] += 0.5 * (before + after) * dt
+            self.velocities[i] = after
+        self.last_update = now
+
+    def rejection(self, msg):
+        if self.e_stopped:
+            return 'e-stop engaged: commands are rejected until it is released'
+        if not msg.name:
+            return 'command names no actuator'
+        if len(msg.name) != len(msg.velocity):
+            return 'command has %d names but %d velocities' % (len(msg.name), len(msg.velocity))
+        if len(set(msg.name)) != len(msg.name):
+            return 'an actuator is named twice in one command'
+        for name, velocity in zip(msg.name, msg.velocity):
+            if name not in self.names:
+                return "unknown actuator '%s' (known: %s)" % (name, ', '.join(self.names))
+            if not math.isfinite(velocity):
+                return "non-finite velocity %r for actuator '%s'" % (velocity, name)
+        return None
+
+    def on_command(self, msg):
+        now = rospy.get_time()
+        with self.lock:
+            reason = self.rejection(msg)
+            if reason is not None:
+                self.rejected += 1
+                self.last_rejection = reason
+                rospy.logerr_throttle(1.0, 'loopback hardware: command rejected: ' + reason)
+                return
+            self.advance(now)
+            for name, velocity in zip(msg.name, msg.velocity):
+                limit = self.max_velocity
+                self.setpoints[self.names.index(name)] = max(-limit, min(limit, velocity))
+            self.accepted += 1
+            self.last_accepted = now
+            self.timed_out = False
+
+    def on_e_stop(self, msg):
+        with self.lock:
+            if msg.data == self.e_stopped:
+                return
+            now = rospy.get_time()
+            self.advance(now)
+            self.e_stopped = msg.data
+            self.setpoints = [0.0] * len(self.names)
+            if msg.data:
+                self.velocities = [0.0] * len(self.names)
+                rospy.logerr('loopback hardware: e-stop engaged')
+            else:
+                rospy.logwarn('loopback hardware: e-stop released')
+            self.publish(now)
+        self.updater.force_update()
+
+    def on_timer(self, _event):
+        now = rospy.get_time()
+        with self.lock:
+            self.advance(now)
+            self.publish(now)
+        self.updater.update()
+
+    def publish(self, now):
+        state = JointState(name=list(self.names), position=list(self.positions),
+                           velocity=list(self.velocities))
+        state.header.stamp = rospy.Time.from_sec(now)
+        self.state_pub.publish(state)
+
+    def diagnose(self, status):
+        with self.lock:
+            if self.e_stopped:
+                status.summary(DiagnosticStatus.ERROR, 'e-stop engaged')
+            elif self.timed_out:
+                status.summary(DiagnosticStatus.WARN, 'command timeout: actuators brought to rest')
+            elif self.last_accepted is None:
+                status.summary(DiagnosticStatus.OK, 'waiting for the first command')
+            else:
+                status.summary(DiagnosticStatus.OK, 'following commands')
+            status.add('accepted commands', str(self.accepted))
+            status.add('rejected commands', str(self.rejected))
+            status.add('last rejection', self.last_rejection)
+            status.add('command timeout [s]', str(self.timeout))
+            for name, setpoint, velocity in zip(self.names, self.setpoints, self.velocities):
+                status.add(name + ' set-point, velocity [rad/s]',
+                           '%.6g, %.6g' % (setpoint, velocity))
+        return status
+
+
+def main():
+    rospy.init_node('loopback_hardware')
+    try:
+        LoopbackHardware()
+    except ParameterError as error:
+        rospy.logfatal('%s: %s', rospy.get_name(), error)
+        sys.exit(1)
+    rospy.spin()
+
+
+if __name__ == '__main__':
+    main()
