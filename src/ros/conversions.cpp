@@ -112,42 +112,74 @@ nav_msgs::Odometry toOdometry(const Eigen::Vector3d& position, const Eigen::Quat
   return msg;
 }
 
-terrain::DriveRates ratesFromJointState(terrain::RobotType type, const sensor_msgs::JointState& msg) {
+std::vector<double> velocitiesByName(const sensor_msgs::JointState& msg,
+                                     const std::vector<std::string>& names) {
   if (msg.velocity.size() < msg.name.size()) {
     std::ostringstream what;
     what << "JointState has " << msg.name.size() << " names but " << msg.velocity.size()
          << " velocities";
     throw std::invalid_argument(what.str());
   }
+  std::vector<double> velocities;
+  for (const std::string& name : names) {
+    const auto found = std::find(msg.name.begin(), msg.name.end(), name);
+    if (found == msg.name.end())
+      throw std::invalid_argument("JointState lacks actuator '" + name + "'");
+    const double velocity = msg.velocity[found - msg.name.begin()];
+    requireFinite(velocity, "velocity of actuator '" + name + "'");
+    velocities.push_back(velocity);
+  }
+  return velocities;
+}
+
+sensor_msgs::JointState velocityJointState(const std::vector<std::string>& names,
+                                           const std::vector<double>& velocities,
+                                           const ros::Time& stamp) {
+  sensor_msgs::JointState msg;
+  msg.header.stamp = stamp;
+  msg.name = names;
+  msg.velocity = velocities;
+  return msg;
+}
+
+namespace {
+
+/// The indices into DriveRates of the rates `type` actuates, and their actuator names.
+std::pair<std::vector<std::size_t>, std::vector<std::string>> actuatedRateNames(
+    terrain::RobotType type) {
   const auto actuated = terrain::actuatedRates(type);
   const auto names = terrain::rateNames(type);
-  terrain::DriveRates rates;
+  std::pair<std::vector<std::size_t>, std::vector<std::string>> result;
   for (std::size_t i = 0; i < actuated.size(); ++i) {
     if (!actuated[i]) continue;
-    const auto found = std::find(msg.name.begin(), msg.name.end(), names[i]);
-    if (found == msg.name.end()) {
-      throw std::invalid_argument("JointState lacks actuator '" + std::string(names[i]) +
-                                  "' of robot type " + terrain::toString(type));
-    }
-    const double velocity = msg.velocity[found - msg.name.begin()];
-    requireFinite(velocity, "velocity of actuator '" + std::string(names[i]) + "'");
-    rateAt(rates, i) = velocity;
+    result.first.push_back(i);
+    result.second.emplace_back(names[i]);
   }
+  return result;
+}
+
+}  // namespace
+
+terrain::DriveRates ratesFromJointState(terrain::RobotType type, const sensor_msgs::JointState& msg) {
+  const auto [indices, names] = actuatedRateNames(type);
+  std::vector<double> velocities;
+  try {
+    velocities = velocitiesByName(msg, names);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string(e.what()) + " (robot type " +
+                                terrain::toString(type) + ")");
+  }
+  terrain::DriveRates rates;
+  for (std::size_t k = 0; k < indices.size(); ++k) rateAt(rates, indices[k]) = velocities[k];
   return rates;
 }
 
 sensor_msgs::JointState jointStateFromRates(terrain::RobotType type, const terrain::DriveRates& rates,
                                             const ros::Time& stamp) {
-  const auto actuated = terrain::actuatedRates(type);
-  const auto names = terrain::rateNames(type);
-  sensor_msgs::JointState msg;
-  msg.header.stamp = stamp;
-  for (std::size_t i = 0; i < actuated.size(); ++i) {
-    if (!actuated[i]) continue;
-    msg.name.emplace_back(names[i]);
-    msg.velocity.push_back(rateAt(rates, i));
-  }
-  return msg;
+  const auto [indices, names] = actuatedRateNames(type);
+  std::vector<double> velocities;
+  for (const std::size_t i : indices) velocities.push_back(rateAt(rates, i));
+  return velocityJointState(names, velocities, stamp);
 }
 
 PlanarTwist planarTwist(const geometry_msgs::Twist& twist) {

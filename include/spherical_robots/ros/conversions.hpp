@@ -64,6 +64,17 @@ nav_msgs::Odometry toOdometry(const Eigen::Vector3d& position, const Eigen::Quat
 /// type does not actuate are 0, names the type does not have are ignored.
 /// @throw std::invalid_argument if an actuator of the type is missing, the velocity array is
 /// shorter than the name array, or a velocity is not finite.
+/// The velocity [rad/s] of each named actuator in msg, in the order of names (others ignored).
+/// @throw std::invalid_argument naming the problem: fewer velocities than names in msg, a name
+/// missing, a non-finite velocity.
+std::vector<double> velocitiesByName(const sensor_msgs::JointState& msg,
+                                     const std::vector<std::string>& names);
+
+/// A JointState with these names and velocities [rad/s] (no positions, no efforts).
+sensor_msgs::JointState velocityJointState(const std::vector<std::string>& names,
+                                           const std::vector<double>& velocities,
+                                           const ros::Time& stamp);
+
 terrain::DriveRates ratesFromJointState(terrain::RobotType type, const sensor_msgs::JointState& msg);
 
 /// A JointState with the type's actuator names and their rates [rad/s] as velocities (no

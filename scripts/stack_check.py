@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""rostest of launch/terrain_stack.launch: the whole terrain stack, headless, in simulated time.
+"""rostest of the stacks built on the terrain plant (launch/terrain_stack.launch,
+launch/roller_stack.launch), headless, in simulated time.
 
-Runs in the stack's namespace (test/terrain_stack.test, test/terrain_teleop.test). Private params:
-~mode (tracking | teleop, as launched) and ~frame_prefix. Times are simulated (the plant owns
+Runs in the stack's namespace (test/terrain_*.test, test/roller_*.test). Private params: ~mode
+(tracking | teleop | seam | roller; see the classes) and ~frame_prefix. Times are simulated (the plant owns
 /clock), bounded by generous wall-clock deadlines; tolerances are generous where the machine's load
 matters (tracking error) and tight where the maths is exact (the contact point lies on the surface,
 which the plant never integrates off).
@@ -22,10 +23,10 @@ from nav_msgs.msg import Odometry, Path
 from sensor_msgs.msg import JointState
 from std_msgs.msg import Bool
 
-from spherical_robots.msg import TerrainState, TrackingError
+from spherical_robots.msg import RollerDrive, TerrainState, TrackingError
 
 PKG = 'spherical_robots'
-NAME = 'terrain_stack_check'
+NAME = 'stack_check'
 WALL_DEADLINE = 120.0          # [s] wall, for anything the stack should do in time
 SETTLE = (40.0, 60.0)          # [s] simulated window in which tracking has converged
 SLACK = 0.5                    # [s] simulated: message latency at 10x real time (50 ms of wall)
@@ -381,7 +382,29 @@ class SeamCheck(StackFixture):
                    'a command-timeout WARN on /diagnostics')
 
 
+class RollerCheck(SeamCheck):
+    """mode:=roller: the roller stack's seam checks, plus the friction drive's slip as published
+    on roller_drive against eq 28 in closed form, S1 = -S2 = (v1 sin a1 - v2 sin a2) / 2, with the
+    measured roller speeds and the configured arrangement angles."""
+
+    def test_00_slip_is_eq_28(self):
+        drives = Recorder('roller_drive', RollerDrive)
+        wait_until(lambda: drives.count() >= 100, '100 roller_drive messages')
+        alpha1 = math.radians(float(rospy.get_param('roller/alpha1_deg')))
+        alpha2 = math.radians(float(rospy.get_param('roller/alpha2_deg')))
+        largest = 0.0
+        for msg in drives.since(0):
+            v1, v2 = msg.roller_speed
+            expected = 0.5 * (v1 * math.sin(alpha1) - v2 * math.sin(alpha2))
+            self.assertAlmostEqual(msg.slip[0], expected, delta=1e-9 * (1.0 + abs(expected)))
+            self.assertAlmostEqual(msg.slip[1], -expected, delta=1e-9 * (1.0 + abs(expected)))
+            largest = max(largest, abs(msg.slip[0]))
+        rospy.loginfo('slip: |S1| up to %.4f m/s over %d samples', largest, drives.count())
+        self.assertGreater(largest, 0.01, 'no slip at all with alpha1 = -alpha2 != 0')
+
+
 if __name__ == '__main__':
     rospy.init_node(NAME)
     mode = rospy.get_param('~mode', 'tracking')
-    rostest.rosrun(PKG, NAME, {'teleop': TeleopCheck, 'seam': SeamCheck}.get(mode, TrackingCheck))
+    rostest.rosrun(PKG, NAME, {'teleop': TeleopCheck, 'seam': SeamCheck,
+                               'roller': RollerCheck}.get(mode, TrackingCheck))

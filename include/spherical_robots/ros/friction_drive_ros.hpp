@@ -1,0 +1,76 @@
+#pragma once
+// The roller stack's two ends of the friction drive (launch/roller_stack.launch), each a thin node
+// over roller::RollerActuation:
+//
+//   pure_pursuit_controller (2R) --drive/command--> FrictionDriveControllerRos --actuators/command-->
+//   hardware interface --actuators/state--> FrictionDriveSimRos --drive/state--> terrain plant (2R)
+//
+// The controller asks for a sphere velocity as 2R drive rates; the inverse kinematics turns it
+// into roller motor rates for the hardware interface. The simulated drive turns the measured motor
+// rates into the sphere's angular velocity (forward, with slip) for the plant, and shows the slip.
+// On a real robot the second half is the physical contact between rollers and sphere.
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
+
+#include <string>
+#include <vector>
+
+#include "spherical_robots/roller/roller_actuation.hpp"
+#include "spherical_robots/ros/input_monitor.hpp"
+
+namespace spherical_robots {
+
+/// Parameters: roller/... (config/roller.yaml, the node handle's namespace), robot_description
+/// (the sphere's radius), ~input_timeout [s] (0.5). Subscribes drive/command (JointState theta,
+/// phi [rad/s]); publishes actuators/command (roller_1, roller_2 [rad/s]) once per good command,
+/// and nothing for a bad one, so the hardware interface's watchdog sees a silent controller.
+class FrictionDriveControllerRos {
+ public:
+  /// @throw std::invalid_argument on a bad parameter, URDF or drive geometry.
+  FrictionDriveControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh);
+
+ private:
+  void onDriveCommand(const sensor_msgs::JointState& msg);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  roller::RollerActuation actuation_;
+  std::vector<double> last_motor_rates_;
+  InputMonitor input_;
+  ros::Subscriber command_sub_;
+  ros::Publisher command_pub_;
+  diagnostic_updater::Updater updater_;
+  ros::Timer diagnostics_timer_;
+};
+
+/// Parameters: as FrictionDriveControllerRos, plus ~frame_prefix ("") and ~marker_rate [Hz] (20).
+/// Subscribes actuators/state (roller_1, roller_2 measured [rad/s]); publishes, for each good
+/// state, drive/state (JointState theta, phi [rad/s], the horizontal part of eq 11's ω) and
+/// roller_drive (spherical_robots/RollerDrive: ω, slip), and roller_markers
+/// (visualization_msgs/MarkerArray in <prefix>heading: rollers and slip arrows).
+class FrictionDriveSimRos {
+ public:
+  /// @throw std::invalid_argument on a bad parameter, URDF or drive geometry.
+  FrictionDriveSimRos(ros::NodeHandle nh, ros::NodeHandle pnh);
+
+ private:
+  void onActuatorState(const sensor_msgs::JointState& msg);
+  void publishMarkers(const roller::DriveState& state, const ros::Time& stamp);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  roller::RollerActuation actuation_;
+  std::string heading_frame_;
+  double marker_period_;
+  ros::Time last_markers_;
+  roller::DriveState last_state_;
+  InputMonitor input_;
+  ros::Subscriber state_sub_;
+  ros::Publisher drive_state_pub_;
+  ros::Publisher drive_pub_;
+  ros::Publisher marker_pub_;
+  diagnostic_updater::Updater updater_;
+  ros::Timer diagnostics_timer_;
+};
+
+}  // namespace spherical_robots

@@ -1,0 +1,180 @@
+#include "spherical_robots/ros/friction_drive_ros.hpp"
+
+#include <geometry_msgs/Point.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <stdexcept>
+
+#include "spherical_robots/RollerDrive.h"
+#include "spherical_robots/config/roller_config.hpp"
+#include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/ros/ros_parameter_source.hpp"
+
+namespace spherical_robots {
+namespace {
+
+const std::vector<std::string> kMotorNames(config::kRollerActuatorNames.begin(),
+                                           config::kRollerActuatorNames.end());
+constexpr double kDiagnosticsPeriod = 0.5;  // [s] how often the updater is offered a report
+constexpr double kRollerWidth = 0.02;       // [m] of the roller markers
+constexpr double kSlipArrowScale = 1.0;     // [m per m/s] of the slip arrows
+
+roller::RollerActuation loadActuation(const ros::NodeHandle& nh) {
+  return config::makeRollerActuation(config::loadRollerConfig(RosParameterSource(nh)),
+                                     radiusFromRobotDescription(nh));
+}
+
+void describeDrive(const roller::RollerActuation& actuation, diagnostic_updater::DiagnosticStatusWrapper& status) {
+  const auto& rollers = actuation.drive().geometry().rollers();
+  status.add("sphere radius [m]", actuation.drive().geometry().radius());
+  status.add("roller radius [m]", actuation.rollerRadius());
+  status.addf("alpha1, alpha2 [deg]", "%.6g, %.6g", rollers[0].alpha * 180.0 / M_PI,
+              rollers[1].alpha * 180.0 / M_PI);
+}
+
+visualization_msgs::Marker marker(const std::string& frame, const ros::Time& stamp, int id,
+                                  int type) {
+  visualization_msgs::Marker m;
+  m.header.frame_id = frame;
+  m.header.stamp = stamp;
+  m.ns = "roller_drive";
+  m.id = id;
+  m.type = type;
+  m.action = visualization_msgs::Marker::ADD;
+  m.pose.orientation.w = 1.0;
+  m.color.a = 1.0;
+  return m;
+}
+
+}  // namespace
+
+FrictionDriveControllerRos::FrictionDriveControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
+    : actuation_(loadActuation(nh)),
+      last_motor_rates_(2, 0.0),
+      input_(nh.resolveName("drive/command"), positiveParam(pnh, "input_timeout", 0.5)),
+      updater_(nh, pnh) {
+  command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", 10);
+  command_sub_ = nh.subscribe("drive/command", 10, &FrictionDriveControllerRos::onDriveCommand, this);
+  updater_.setHardwareID("friction drive");
+  updater_.add("friction drive inverse", this, &FrictionDriveControllerRos::diagnose);
+  diagnostics_timer_ = nh.createTimer(ros::Duration(kDiagnosticsPeriod),
+                                      [this](const ros::TimerEvent&) { updater_.update(); });
+  ROS_INFO_STREAM("Friction drive inverse: " << input_.topic() << " (2R rates) -> "
+                                             << command_pub_.getTopic() << " (roller motors)");
+}
+
+void FrictionDriveControllerRos::onDriveCommand(const sensor_msgs::JointState& msg) {
+  try {
+    const std::array<double, 2> motor_rates =
+        actuation_.motorRates(conversions::ratesFromJointState(terrain::RobotType::TwoAxisRolling, msg));
+    last_motor_rates_.assign(motor_rates.begin(), motor_rates.end());
+    input_.accept(ros::Time::now());
+    command_pub_.publish(conversions::velocityJointState(kMotorNames, last_motor_rates_, msg.header.stamp));
+  } catch (const std::invalid_argument& e) {
+    input_.reject(e.what());  // nothing published: the hardware keeps the last good set-points
+  }
+}
+
+void FrictionDriveControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  status.summary(diagnostic_msgs::DiagnosticStatus::OK, "converting drive commands");
+  describeDrive(actuation_, status);
+  status.addf("roller_1, roller_2 set-points [rad/s]", "%.6g, %.6g", last_motor_rates_[0],
+              last_motor_rates_[1]);
+  input_.report(status, ros::Time::now());
+}
+
+FrictionDriveSimRos::FrictionDriveSimRos(ros::NodeHandle nh, ros::NodeHandle pnh)
+    : actuation_(loadActuation(nh)),
+      heading_frame_(stringParam(pnh, "frame_prefix", "") + "heading"),
+      marker_period_(1.0 / positiveParam(pnh, "marker_rate", 20.0)),
+      input_(nh.resolveName("actuators/state"), positiveParam(pnh, "input_timeout", 0.5)),
+      updater_(nh, pnh) {
+  drive_state_pub_ = nh.advertise<sensor_msgs::JointState>("drive/state", 10);
+  drive_pub_ = nh.advertise<spherical_robots::RollerDrive>("roller_drive", 10);
+  marker_pub_ = nh.advertise<visualization_msgs::MarkerArray>("roller_markers", 10);
+  state_sub_ = nh.subscribe("actuators/state", 10, &FrictionDriveSimRos::onActuatorState, this);
+  updater_.setHardwareID("friction drive");
+  updater_.add("friction drive forward", this, &FrictionDriveSimRos::diagnose);
+  diagnostics_timer_ = nh.createTimer(ros::Duration(kDiagnosticsPeriod),
+                                      [this](const ros::TimerEvent&) { updater_.update(); });
+  ROS_INFO_STREAM("Friction drive forward: " << input_.topic() << " (roller motors) -> "
+                                             << drive_state_pub_.getTopic() << " (2R rates)");
+}
+
+void FrictionDriveSimRos::onActuatorState(const sensor_msgs::JointState& msg) {
+  roller::DriveState state;
+  try {
+    const std::vector<double> rates = conversions::velocitiesByName(msg, kMotorNames);
+    state = actuation_.driveState({rates[0], rates[1]});
+  } catch (const std::invalid_argument& e) {
+    input_.reject(e.what());  // the plant keeps the last good drive state until it goes stale
+    return;
+  }
+  last_state_ = state;
+  input_.accept(ros::Time::now());
+  drive_state_pub_.publish(conversions::jointStateFromRates(
+      terrain::RobotType::TwoAxisRolling, roller::rollingRates(state.omega), msg.header.stamp));
+
+  spherical_robots::RollerDrive drive;
+  drive.header.stamp = msg.header.stamp;
+  drive.roller_speed = {state.speeds.v1, state.speeds.v2};
+  drive.slip = {state.slip[0], state.slip[1]};
+  drive.omega = conversions::toVector3(state.omega);
+  drive.speed = state.motion.speed;
+  drive.direction = state.motion.direction;
+  drive.rho = state.motion.rho;
+  drive_pub_.publish(drive);
+
+  const ros::Time now = ros::Time::now();
+  if (last_markers_.isZero() || now < last_markers_ ||
+      (now - last_markers_).toSec() >= marker_period_ - 1e-9) {
+    last_markers_ = now;
+    publishMarkers(state, msg.header.stamp);
+  }
+}
+
+void FrictionDriveSimRos::publishMarkers(const roller::DriveState& state, const ros::Time& stamp) {
+  // The heading frame sits at the contact point with the floor: the centre O is r above it.
+  const auto& geometry = actuation_.drive().geometry();
+  const Eigen::Vector3d centre(0.0, 0.0, geometry.radius());
+  visualization_msgs::MarkerArray markers;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const roller::RollerContact& contact = geometry.rollers()[i];
+    const Eigen::Vector3d outward = contact.point.normalized();
+    auto body = marker(heading_frame_, stamp, static_cast<int>(i), visualization_msgs::Marker::CYLINDER);
+    body.pose.position = conversions::toPoint(centre + contact.point + actuation_.rollerRadius() * outward);
+    body.pose.orientation = conversions::toQuaternion(
+        Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), contact.axis));
+    body.scale.x = body.scale.y = 2.0 * actuation_.rollerRadius();
+    body.scale.z = kRollerWidth;
+    body.color.r = 0.2f;
+    body.color.g = 0.2f;
+    body.color.b = 0.8f;
+    markers.markers.push_back(body);
+
+    // Slip ζ_i = S_i X_i (eq 27), drawn from the contact point.
+    auto slip = marker(heading_frame_, stamp, static_cast<int>(2 + i), visualization_msgs::Marker::ARROW);
+    const Eigen::Vector3d start = centre + contact.point;
+    slip.points = {conversions::toPoint(start),
+                   conversions::toPoint(start + kSlipArrowScale * state.slip[i] * contact.tangent)};
+    slip.scale.x = 0.01;
+    slip.scale.y = 0.02;
+    slip.scale.z = 0.02;
+    slip.color.r = 1.0f;
+    slip.color.g = 0.5f;
+    markers.markers.push_back(slip);
+  }
+  marker_pub_.publish(markers);
+}
+
+void FrictionDriveSimRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  status.summary(diagnostic_msgs::DiagnosticStatus::OK, "driving the sphere");
+  describeDrive(actuation_, status);
+  status.addf("v1, v2 [m/s]", "%.6g, %.6g", last_state_.speeds.v1, last_state_.speeds.v2);
+  status.addf("S1, S2 [m/s]", "%.6g, %.6g", last_state_.slip[0], last_state_.slip[1]);
+  input_.report(status, ros::Time::now());
+}
+
+}  // namespace spherical_robots
