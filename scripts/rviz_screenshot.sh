@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# Screenshot of rviz showing a recorded terrain bag at a given bag time, headless:
+# Screenshot of rviz showing a recorded bag at a given bag time, headless:
 #
 #   scripts/rviz_screenshot.sh BAG PNG [AT]     (AT: seconds of bag time, default: 1 s before its end)
+#   STACK=roller scripts/rviz_screenshot.sh ...  (the stack that recorded it: terrain (default) | roller)
 #
 # Under its own virtual X server (xvfb-run) and its own ROS master, it runs
 # `roslaunch spherical_robots replay.launch bag:=BAG start:=...` from 6 s before AT (rviz starts
 # and draws the robot and the trail meanwhile; replay_latched.py supplies the terrain and the
 # desired path, which the bag holds only at its start), waits until /clock reaches AT and saves the
-# rviz window (`import -window`, 1200x846 as in rviz/terrain.rviz) to PNG. Needs the built package.
+# rviz window (`import -window`, 1200x846 as in rviz/<stack>.rviz) to PNG. Needs the built package.
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 [ $# -ge 2 ] || { echo "usage: $0 BAG PNG [AT]" >&2; exit 2; }
@@ -26,13 +27,13 @@ trap 'rm -rf "$work"' EXIT
 export ROS_HOME=$work/ros_home ROS_HOSTNAME=127.0.0.1
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("", 0)); print(s.getsockname()[1]); s.close()')
 export ROS_MASTER_URI=http://127.0.0.1:$port/ SHOT_BAG=$bag SHOT_PNG=$png SHOT_AT=$at SHOT_START=$start
-export SHOT_PORT=$port SHOT_LOG=$work/roslaunch.log
+export SHOT_PORT=$port SHOT_LOG=$work/roslaunch.log SHOT_STACK=${STACK:-terrain}
 
 sr_log "replaying $(basename "$bag") from $start s into it, screenshot at bag time $at s"
 xvfb-run -a -s "-screen 0 1280x1024x24" bash -c '
   set -u
   setsid roslaunch -p "$SHOT_PORT" spherical_robots replay.launch bag:="$SHOT_BAG" \
-    start:="$SHOT_START" > "$SHOT_LOG" 2>&1 &
+    stack:="$SHOT_STACK" start:="$SHOT_START" > "$SHOT_LOG" 2>&1 &
   pid=$!
   # The /clock of the replay reaches AT (bag start time + offset), within 90 s of wall time.
   python3 - <<PY
@@ -54,7 +55,7 @@ while time.time() < deadline:
 sys.exit("the replay did not reach t = %g s" % target)
 PY
   rc=$?
-  [ $rc -ne 0 ] || import -window "terrain.rviz - RViz" "$SHOT_PNG" || rc=$?
+  [ $rc -ne 0 ] || import -window "$SHOT_STACK.rviz - RViz" "$SHOT_PNG" || rc=$?
   kill -INT -- "-$pid" 2>/dev/null
   wait "$pid" 2>/dev/null
   exit $rc
