@@ -35,7 +35,9 @@ class HardwareInterfaceSimCheck(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         node = rospy.resolve_name(rospy.get_param('~node', 'hardware_interface'))
-        cls.names = rospy.get_param(node + '/actuator_names')
+        cls.effort_limits = rospy.get_param(node + '/effort_limits', {})
+        cls.all_names = rospy.get_param(node + '/actuator_names')
+        cls.names = [n for n in cls.all_names if n not in cls.effort_limits]  # velocity actuators
         cls.max_velocity = float(rospy.get_param(node + '/max_velocity', 20.0))
         cls.max_acceleration = float(rospy.get_param(node + '/max_acceleration', 50.0))
         cls.timeout = float(rospy.get_param(node + '/command_timeout', 0.5))
@@ -74,10 +76,12 @@ class HardwareInterfaceSimCheck(unittest.TestCase):
     def setUp(self):
         self.resetActuators()
 
-    def command(self, velocities):
-        """Publishes one command: velocities maps actuator names to set-points [rad/s]."""
-        self.command_pub.publish(JointState(name=list(velocities),
-                                            velocity=list(velocities.values())))
+    def command(self, setpoints):
+        """Publishes one command: setpoints maps actuator names to set-points, rates [rad/s] for
+        velocity actuators, efforts for effort actuators; both arrays carry every value, and each
+        actuator reads the one of its kind."""
+        values = list(setpoints.values())
+        self.command_pub.publish(JointState(name=list(setpoints), velocity=values, effort=values))
 
     def commandFor(self, velocities, duration, extra=None):
         """Streams velocities at COMMAND_RATE for duration [s]; extra (a command) is sent between
@@ -106,6 +110,9 @@ class HardwareInterfaceSimCheck(unittest.TestCase):
     def velocity(self, state, name):
         return dict(zip(state.name, state.velocity))[name]
 
+    def effort(self, state, name):
+        return dict(zip(state.name, state.effort))[name]
+
     def waitFor(self, predicate, timeout, what):
         """Waits up to timeout [s] of wall time for predicate() to hold; fails naming what."""
         deadline = time.time() + timeout
@@ -125,9 +132,9 @@ class HardwareInterfaceSimCheck(unittest.TestCase):
     def resetActuators(self):
         """Releases the e-stop and brings every actuator to rest with a zero command."""
         self.e_stop_pub.publish(Bool(data=False))
-        zero = {name: 0.0 for name in self.names}
+        zero = {name: 0.0 for name in self.all_names}
         deadline = time.time() + 10.0
-        while not all(v == 0.0 for v in self.latest().velocity):
+        while not all(v == 0.0 for v in self.latest().velocity + self.latest().effort):
             if time.time() > deadline:
                 self.fail('the actuators did not come to rest before the test: %s'
                           % (self.latest().velocity,))
@@ -261,6 +268,43 @@ class HardwareInterfaceSimCheck(unittest.TestCase):
         self.e_stop_pub.publish(Bool(data=False))
         self.reach(moving)
 
+    def effortActuator(self):
+        if not self.effort_limits:
+            self.skipTest('the node under test has no effort actuators (~effort_limits)')
+        name = sorted(self.effort_limits)[0]
+        return name, float(self.effort_limits[name])
+
+    def test_effort_setpoints_applied_and_limited(self):
+        name, limit = self.effortActuator()
+        self.commandFor({name: 0.5 * limit}, 0.5)
+        state = self.latest()
+        self.assertEqual(self.effort(state, name), 0.5 * limit, 'an ideal effort actuator '
+                         'applies its set-point at once')
+        self.assertEqual(self.velocity(state, name), 0.0)
+        self.commandFor({name: -10.0 * limit}, 0.5)
+        self.assertEqual(self.effort(self.latest(), name), -limit, 'not clamped to the limit')
+        # The velocity actuators report no effort.
+        for other in self.names:
+            self.assertEqual(self.effort(self.latest(), other), 0.0)
+
+    def test_effort_dropped_by_watchdog_and_e_stop(self):
+        name, limit = self.effortActuator()
+        last_command = self.commandFor({name: limit}, 0.5)
+        self.waitFor(lambda: self.effort(self.latest(), name) == 0.0, self.timeout + 10.0 * SLACK,
+                     'the watchdog to drop the effort')
+        dropped = next(s for s in self.statesSince(last_command) if self.effort(s, name) == 0.0)
+        self.assertLessEqual(dropped.header.stamp.to_sec() - last_command, self.timeout + SLACK)
+        self.assertGreaterEqual(dropped.header.stamp.to_sec() - last_command, self.timeout - 0.05)
+
+        self.commandFor({name: limit}, 0.3)
+        engaged = rospy.get_time()
+        self.e_stop_pub.publish(Bool(data=True))
+        self.commandFor({name: limit}, 0.5)
+        stopped = next(s for s in self.statesSince(engaged) if self.effort(s, name) == 0.0)
+        self.assertLess(stopped.header.stamp.to_sec() - engaged, SLACK)
+        self.assertEqual(self.effort(self.latest(), name), 0.0, 'effort applied during the e-stop')
+        self.e_stop_pub.publish(Bool(data=False))
+
     def test_malformed_parameters_fail_at_startup(self):
         node_type = rospy.get_param('~node_type', 'hardware_interface_sim_node')
         node = roslib.packages.find_node(PKG, node_type)
@@ -274,6 +318,8 @@ class HardwareInterfaceSimCheck(unittest.TestCase):
             ('zero_acceleration', dict(base, max_acceleration=0), 'max_acceleration'),
             ('nan_timeout', dict(base, command_timeout=float('nan')), 'command_timeout'),
             ('text_rate', dict(base, rate='fast'), 'rate'),
+            ('unknown_effort_actuator', dict(base, effort_limits={'slider': 5.0}), 'effort_limits'),
+            ('negative_effort_limit', dict(base, effort_limits={'phi': -1.0}), 'effort_limits'),
         ]
         for case, params, bad in cases:
             name = 'bad_' + case

@@ -2,14 +2,15 @@
 """A second, independent implementation of the hardware-interface contract
 (docs/hardware_interface.md), written from the document alone and sharing no code with
 hardware_interface_sim: rate set-points on `actuators/command` are followed by ideal actuators
-(velocity and acceleration limits, nothing else) and looped back as measured states on
-`actuators/state`, with the command-timeout watchdog, the latched `estop` and the rejection
+(velocity and acceleration limits, nothing else), effort set-points are applied at once within
+their limits, and both are looped back as measured states on `actuators/state`, with the command-timeout watchdog, the latched `estop` and the rejection
 rules of the contract. It is what a minimal real driver looks like, and the stacks' rostests run
 with it in place of hardware_interface_sim (`hardware:=loopback`) to show that nothing else
 depends on the simulated one.
 
 Private parameters, as hardware_interface_sim's: actuator_names (required), max_velocity [rad/s],
-max_acceleration [rad/s^2], command_timeout [s], rate [Hz], diagnostic_period [s]; models_file
+max_acceleration [rad/s^2], effort_limits ({name: max effort}: those actuators take efforts),
+command_timeout [s], rate [Hz], diagnostic_period [s]; models_file
 must be empty (there are no actuator models here). A missing or
 malformed one is fatal at start-up (exit status 1, the message naming node and parameter).
 """
@@ -39,6 +40,22 @@ def positive_parameter(name, default):
     return float(value)
 
 
+def effort_limits(names):
+    key = rospy.resolve_name('~effort_limits')
+    limits = rospy.get_param(key, {})
+    if not isinstance(limits, dict):
+        raise ParameterError('parameter %s: %r is not a dictionary name -> max effort'
+                             % (key, limits))
+    for name, limit in limits.items():
+        if name not in names:
+            raise ParameterError('parameter %s/%s names no actuator in actuator_names'
+                                 % (key, name))
+        if isinstance(limit, bool) or not isinstance(limit, (int, float)) \
+                or not math.isfinite(limit) or limit <= 0.0:
+            raise ParameterError('parameter %s/%s: %r must be finite and > 0' % (key, name, limit))
+    return {name: float(limit) for name, limit in limits.items()}
+
+
 def actuator_names():
     key = rospy.resolve_name('~actuator_names')
     if not rospy.has_param(key):
@@ -58,6 +75,7 @@ class LoopbackHardware:
         self.names = actuator_names()
         self.max_velocity = positive_parameter('max_velocity', 20.0)
         self.max_acceleration = positive_parameter('max_acceleration', 50.0)
+        self.effort_limits = effort_limits(self.names)
         self.timeout = positive_parameter('command_timeout', 0.5)
         rate = positive_parameter('rate', 100.0)
         models_file = rospy.get_param('~models_file', '')
@@ -71,6 +89,7 @@ class LoopbackHardware:
         self.setpoints = [0.0] * count
         self.velocities = [0.0] * count
         self.positions = [0.0] * count
+        self.efforts = [0.0] * count
         self.last_update = None
         self.last_accepted = None  # ROS time of the last accepted command
         self.timed_out = False
@@ -96,12 +115,16 @@ class LoopbackHardware:
         if (self.last_accepted is not None and not self.timed_out
                 and now - self.last_accepted > self.timeout):
             self.setpoints = [0.0] * len(self.names)
+            self.efforts = [0.0] * len(self.names)
             self.timed_out = True
             rospy.logwarn('loopback hardware: no command for %g s: actuators brought to rest',
                           self.timeout)
         dt = max(0.0, now - self.last_update)
         step = self.max_acceleration * dt
         for i, target in enumerate(self.setpoints):
+            if self.names[i] in self.effort_limits:
+                self.efforts[i] = target
+                continue
             before = self.velocities[i]
             after = before + max(-step, min(step, target - before))
             self.positions[i] += 0.5 * (before + after) * dt
@@ -113,16 +136,27 @@ class LoopbackHardware:
             return 'e-stop engaged: commands are rejected until it is released'
         if not msg.name:
             return 'command names no actuator'
-        if len(msg.name) != len(msg.velocity):
-            return 'command has %d names but %d velocities' % (len(msg.name), len(msg.velocity))
         if len(set(msg.name)) != len(msg.name):
             return 'an actuator is named twice in one command'
-        for name, velocity in zip(msg.name, msg.velocity):
+        for k, name in enumerate(msg.name):
             if name not in self.names:
                 return "unknown actuator '%s' (known: %s)" % (name, ', '.join(self.names))
-            if not math.isfinite(velocity):
-                return "non-finite velocity %r for actuator '%s'" % (velocity, name)
+            kind, values = (('effort', msg.effort) if name in self.effort_limits
+                            else ('velocity', msg.velocity))
+            if k >= len(values):
+                return 'command has %d names but %d %s' % (
+                    len(msg.name), len(values), 'efforts' if kind == 'effort' else 'velocities')
+            if not math.isfinite(values[k]):
+                return "non-finite %s %r for actuator '%s'" % (kind, values[k], name)
         return None
+
+    def setpoint_of(self, msg, k):
+        """The clamped set-point msg gives the k-th actuator it names."""
+        name = msg.name[k]
+        if name in self.effort_limits:
+            limit = self.effort_limits[name]
+            return max(-limit, min(limit, msg.effort[k]))
+        return max(-self.max_velocity, min(self.max_velocity, msg.velocity[k]))
 
     def on_command(self, msg):
         now = rospy.get_time()
@@ -134,9 +168,11 @@ class LoopbackHardware:
                 rospy.logerr_throttle(1.0, 'loopback hardware: command rejected: ' + reason)
                 return
             self.advance(now)
-            for name, velocity in zip(msg.name, msg.velocity):
-                limit = self.max_velocity
-                self.setpoints[self.names.index(name)] = max(-limit, min(limit, velocity))
+            for k, name in enumerate(msg.name):
+                i = self.names.index(name)
+                self.setpoints[i] = self.setpoint_of(msg, k)
+                if name in self.effort_limits:
+                    self.efforts[i] = self.setpoints[i]
             self.accepted += 1
             self.last_accepted = now
             self.timed_out = False
@@ -149,6 +185,7 @@ class LoopbackHardware:
             self.advance(now)
             self.e_stopped = msg.data
             self.setpoints = [0.0] * len(self.names)
+            self.efforts = [0.0] * len(self.names)
             if msg.data:
                 self.velocities = [0.0] * len(self.names)
                 rospy.logerr('loopback hardware: e-stop engaged')
@@ -166,7 +203,7 @@ class LoopbackHardware:
 
     def publish(self, now):
         state = JointState(name=list(self.names), position=list(self.positions),
-                           velocity=list(self.velocities))
+                           velocity=list(self.velocities), effort=list(self.efforts))
         state.header.stamp = rospy.Time.from_sec(now)
         self.state_pub.publish(state)
 
@@ -184,9 +221,13 @@ class LoopbackHardware:
             status.add('rejected commands', str(self.rejected))
             status.add('last rejection', self.last_rejection)
             status.add('command timeout [s]', str(self.timeout))
-            for name, setpoint, velocity in zip(self.names, self.setpoints, self.velocities):
-                status.add(name + ' set-point, velocity [rad/s]',
-                           '%.6g, %.6g' % (setpoint, velocity))
+            for i, name in enumerate(self.names):
+                if name in self.effort_limits:
+                    status.add(name + ' set-point, effort [N m or N]',
+                               '%.6g, %.6g' % (self.setpoints[i], self.efforts[i]))
+                else:
+                    status.add(name + ' set-point, velocity [rad/s]',
+                               '%.6g, %.6g' % (self.setpoints[i], self.velocities[i]))
         return status
 
 

@@ -13,6 +13,7 @@
 
 #include "spherical_robots/hardware/simulated_actuators.hpp"
 
+using spherical_robots::hardware::ActuatorKind;
 using spherical_robots::hardware::ActuatorLimits;
 using spherical_robots::hardware::ActuatorModel;
 using spherical_robots::hardware::SimulatedActuators;
@@ -189,8 +190,8 @@ TEST(SimulatedActuators, BadCommandsAreRejectedWithAReasonAndChangeNothing) {
       {{"theta", "phi"}, {1.0, kInf}, 0.2, "non-finite"},
       {{"theta"}, {-kInf}, 0.2, "non-finite"},
       {{"theta", "bogus"}, {1.0, 2.0}, 0.2, "unknown actuator 'bogus'"},
-      {{"theta", "phi"}, {1.0}, 0.2, "2 names but 1 velocities"},
-      {{"theta"}, {}, 0.2, "1 names but 0 velocities"},
+      {{"theta", "phi"}, {1.0}, 0.2, "2 names but 1 set-points"},
+      {{"theta"}, {}, 0.2, "1 names but 0 set-points"},
       {{}, {}, 0.2, "no actuator"},
       {{"phi", "phi"}, {1.0, 1.0}, 0.2, "named twice"},
       {{"theta"}, {1.0}, kNaN, "non-finite command time"},
@@ -558,6 +559,86 @@ TEST(SimulatedActuatorModels, BadModelValuesAreRejectedNamingActuatorAndField) {
         << bad;
   }
   EXPECT_TRUE(contains(error({ActuatorModel{}, {-2.0, 0, 0, 0}}), "got -2"));
+}
+
+namespace {
+
+// Effort actuators (a torque motor "pendulum", a force motor "slider") beside a velocity one.
+SimulatedActuators makeEffortActuators(double timeout = 0.5, double time_constant = 0.0,
+                                       double dead_time = 0.0) {
+  ActuatorLimits rate{10.0, 20.0};
+  ActuatorLimits torque{10.0, 20.0, 2.0, ActuatorKind::Effort};
+  ActuatorLimits force{10.0, 20.0, 50.0, ActuatorKind::Effort};
+  const ActuatorModel model{time_constant, dead_time, 0.0, 0.0};
+  SimulatedActuators actuators({"wheel", "pendulum", "slider"}, {rate, torque, force}, timeout,
+                               {ActuatorModel{}, model, model});
+  actuators.update(0.0);
+  return actuators;
+}
+
+}  // namespace
+
+TEST(SimulatedEffortActuators, ApplyTheClampedSetPointAtOnceAndNeverMove) {
+  auto actuators = makeEffortActuators();
+  ASSERT_EQ(actuators.command({"pendulum", "slider", "wheel"}, {1.5, -80.0, 4.0}, 0.0), "");
+  EXPECT_EQ(actuators.efforts()[1], 1.5);
+  EXPECT_EQ(actuators.efforts()[2], -50.0) << "clamped to max_effort, not max_velocity";
+  EXPECT_EQ(actuators.setpoints()[2], -50.0);
+  stepTo(actuators, 0.0, 0.3, 0.01);
+  EXPECT_EQ(actuators.efforts()[1], 1.5);
+  EXPECT_EQ(actuators.efforts()[0], 0.0) << "a velocity actuator applies no effort";
+  EXPECT_NEAR(actuators.velocities()[0], 4.0, kTol) << "the velocity actuator ramps as before";
+  EXPECT_EQ(actuators.velocities()[1], 0.0) << "the load's motion is the plant's, not known here";
+  EXPECT_EQ(actuators.positions()[2], 0.0);
+}
+
+TEST(SimulatedEffortActuators, LagIsTheExponentialWhateverTheStep) {
+  const double tau = 0.05;
+  for (const double dt : {0.001, 0.01, 0.037}) {
+    auto actuators = makeEffortActuators(100.0, tau);
+    ASSERT_EQ(actuators.command({"pendulum"}, {1.0}, 0.0), "");
+    stepTo(actuators, 0.0, 0.1, dt);
+    EXPECT_NEAR(actuators.efforts()[1], 1.0 - std::exp(-0.1 / tau), 1e-12) << "dt " << dt;
+  }
+}
+
+TEST(SimulatedEffortActuators, DeadTimeDelaysTheEffort) {
+  auto actuators = makeEffortActuators(100.0, 0.0, 0.02);
+  ASSERT_EQ(actuators.command({"slider"}, {10.0}, 0.0), "");
+  actuators.update(0.019);
+  EXPECT_EQ(actuators.efforts()[2], 0.0);
+  actuators.update(0.021);
+  EXPECT_EQ(actuators.efforts()[2], 10.0);
+}
+
+TEST(SimulatedEffortActuators, WatchdogAndEStopDropTheEffortAtOnceEvenWithALag) {
+  auto actuators = makeEffortActuators(0.5, 0.05);
+  ASSERT_EQ(actuators.command({"pendulum", "slider"}, {2.0, 30.0}, 0.0), "");
+  actuators.update(0.499);
+  EXPECT_GT(actuators.efforts()[1], 1.99);
+  actuators.update(0.51);  // deadline 0.5 s: zero at the deadline, not through the 50 ms lag
+  EXPECT_TRUE(actuators.timedOut());
+  EXPECT_EQ(actuators.efforts()[1], 0.0);
+  EXPECT_EQ(actuators.efforts()[2], 0.0);
+
+  ASSERT_EQ(actuators.command({"slider"}, {30.0}, 0.6), "");
+  actuators.update(0.8);
+  EXPECT_GT(actuators.efforts()[2], 29.0);
+  actuators.setEStop(true, 0.8);
+  EXPECT_EQ(actuators.efforts()[2], 0.0);
+  EXPECT_NE(actuators.command({"slider"}, {30.0}, 0.9), "");
+  EXPECT_EQ(actuators.efforts()[2], 0.0);
+}
+
+TEST(SimulatedEffortActuators, NonFiniteEffortIsRejectedNamingIt) {
+  auto actuators = makeEffortActuators();
+  ASSERT_EQ(actuators.command({"slider"}, {5.0}, 0.0), "");
+  const std::string reason = actuators.command({"slider"}, {kNaN}, 0.1);
+  EXPECT_TRUE(contains(reason, "non-finite effort")) << reason;
+  EXPECT_EQ(actuators.efforts()[2], 5.0) << "the last good set-point stands";
+  EXPECT_TRUE(contains(constructionError({"slider"}, {ActuatorLimits{1.0, 1.0, 0.0, ActuatorKind::Effort}},
+                                         0.5),
+                       "max_effort"));
 }
 
 int main(int argc, char** argv) {

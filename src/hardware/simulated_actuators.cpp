@@ -65,6 +65,7 @@ SimulatedActuators::SimulatedActuators(std::vector<std::string> names,
     requirePositive(limits_[i].max_velocity, "SimulatedActuators: max_velocity" + of + " [rad/s]");
     requirePositive(limits_[i].max_acceleration,
                     "SimulatedActuators: max_acceleration" + of + " [rad/s^2]");
+    requirePositive(limits_[i].max_effort, "SimulatedActuators: max_effort" + of + " [N m or N]");
     requireNonNegative(models_[i].time_constant, "SimulatedActuators: time_constant" + of + " [s]");
     requireNonNegative(models_[i].dead_time, "SimulatedActuators: dead_time" + of + " [s]");
     requireNonNegative(models_[i].position_resolution,
@@ -78,18 +79,19 @@ SimulatedActuators::SimulatedActuators(std::vector<std::string> names,
   pending_.assign(names_.size(), {});
   velocities_.assign(names_.size(), 0.0);
   positions_.assign(names_.size(), 0.0);
+  efforts_.assign(names_.size(), 0.0);
   measured_velocities_.assign(names_.size(), 0.0);
   measured_positions_.assign(names_.size(), 0.0);
 }
 
 std::string SimulatedActuators::command(const std::vector<std::string>& names,
-                                        const std::vector<double>& velocities, double t) {
+                                        const std::vector<double>& setpoints, double t) {
   if (e_stopped_) return "e-stop engaged: commands are rejected until it is released";
   if (!std::isfinite(t)) return "non-finite command time " + std::to_string(t);
   if (names.empty()) return "command names no actuator";
-  if (names.size() != velocities.size()) {
+  if (names.size() != setpoints.size()) {
     std::ostringstream msg;
-    msg << "command has " << names.size() << " names but " << velocities.size() << " velocities";
+    msg << "command has " << names.size() << " names but " << setpoints.size() << " set-points";
     return msg.str();
   }
   // Validate everything before touching anything, so a rejected command changes nothing.
@@ -102,24 +104,28 @@ std::string SimulatedActuators::command(const std::vector<std::string>& names,
     index[k] = static_cast<std::size_t>(it - names_.begin());
     if (mentioned[index[k]]) return "actuator '" + names[k] + "' named twice in one command";
     mentioned[index[k]] = true;
-    if (!std::isfinite(velocities[k])) {
+    if (!std::isfinite(setpoints[k])) {
       std::ostringstream msg;
-      msg << "non-finite velocity " << velocities[k] << " for actuator '" << names[k] << "'";
+      msg << "non-finite "
+          << (limits_[index[k]].kind == ActuatorKind::Effort ? "effort " : "velocity ")
+          << setpoints[k] << " for actuator '" << names[k] << "'";
       return msg.str();
     }
   }
 
   update(t);
   for (std::size_t k = 0; k < names.size(); ++k) {
-    const double limit = limits_[index[k]].max_velocity;
     const std::size_t i = index[k];
-    setpoints_[i] = std::clamp(velocities[k], -limit, limit);
+    const double limit = limits_[i].kind == ActuatorKind::Effort ? limits_[i].max_effort
+                                                                 : limits_[i].max_velocity;
+    setpoints_[i] = std::clamp(setpoints[k], -limit, limit);
     if (models_[i].dead_time > 0.0)
       pending_[i].push_back({now_ + models_[i].dead_time, setpoints_[i]});
     else
       active_setpoints_[i] = setpoints_[i];
   }
   // now_ rather than t: a late-arriving command restarts the watchdog at the latest time seen.
+  applyInstantEfforts();
   last_command_time_ = now_;
   has_command_ = true;
   timed_out_ = false;
@@ -158,6 +164,7 @@ void SimulatedActuators::update(double t) {
       zeroSetpoints();
       timed_out_ = true;
     }
+    applyInstantEfforts();
     if (now_ >= t) break;
   }
   measure();
@@ -170,10 +177,18 @@ void SimulatedActuators::stop(double t) {
   measure();
 }
 
+void SimulatedActuators::applyInstantEfforts() {
+  for (std::size_t i = 0; i < names_.size(); ++i)
+    if (limits_[i].kind == ActuatorKind::Effort && models_[i].time_constant <= 0.0)
+      efforts_[i] = active_setpoints_[i];
+}
+
 void SimulatedActuators::zeroSetpoints() {
   std::fill(setpoints_.begin(), setpoints_.end(), 0.0);
   std::fill(active_setpoints_.begin(), active_setpoints_.end(), 0.0);
   for (auto& queue : pending_) queue.clear();
+  // The safe state of a torque or force actuator is no effort, at once, not through its lag.
+  std::fill(efforts_.begin(), efforts_.end(), 0.0);
 }
 
 void SimulatedActuators::measure() {
@@ -198,10 +213,15 @@ void SimulatedActuators::setEStop(bool engaged, double t) {
 void SimulatedActuators::integrate(double dt) {
   if (dt <= 0.0) return;
   for (std::size_t i = 0; i < names_.size(); ++i) {
-    const double v0 = velocities_[i];
     const double target = active_setpoints_[i];
-    const double a = limits_[i].max_acceleration;
     const double tau = models_[i].time_constant;
+    if (limits_[i].kind == ActuatorKind::Effort) {
+      // e(s) = u + (e - u) e^{-s/tau}; without a lag applyInstantEfforts() holds e = u.
+      if (tau > 0.0) efforts_[i] = target + (efforts_[i] - target) * std::exp(-dt / tau);
+      continue;
+    }
+    const double v0 = velocities_[i];
+    const double a = limits_[i].max_acceleration;
     const double dv = target - v0;
     if (tau <= 0.0) {
       if (std::abs(dv) <= a * dt) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -101,6 +102,23 @@ std::vector<hardware::ActuatorModel> readModels(const ros::NodeHandle& pnh,
   return models;
 }
 
+/// ~effort_limits: {name: max effort [N m or N], ...}; the actuators it names are effort actuators.
+std::map<std::string, double> readEffortLimits(const ros::NodeHandle& pnh,
+                                               const std::vector<std::string>& names) {
+  std::map<std::string, double> limits;
+  XmlRpc::XmlRpcValue value;
+  if (!pnh.getParam("effort_limits", value)) return limits;
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeStruct)
+    throw badParameter(pnh, "effort_limits",
+                       "must be a dictionary actuator name -> max effort, got " + describe(value));
+  for (auto it = value.begin(); it != value.end(); ++it) {
+    if (std::find(names.begin(), names.end(), it->first) == names.end())
+      throw badParameter(pnh, "effort_limits/" + it->first, "names no actuator in actuator_names");
+    limits[it->first] = positiveParam(pnh, "effort_limits/" + it->first, 0.0);
+  }
+  return limits;
+}
+
 std::uint32_t readNoiseSeed(const ros::NodeHandle& pnh) {
   XmlRpc::XmlRpcValue value;
   if (!pnh.getParam("noise_seed", value)) return 0;
@@ -111,19 +129,55 @@ std::uint32_t readNoiseSeed(const ros::NodeHandle& pnh) {
 
 hardware::SimulatedActuators makeActuators(const ros::NodeHandle& pnh) {
   const std::vector<std::string> names = readActuatorNames(pnh);
-  const hardware::ActuatorLimits limits{positiveParam(pnh, "max_velocity", 20.0),
-                                        positiveParam(pnh, "max_acceleration", 50.0)};
+  hardware::ActuatorLimits velocity_limits;
+  velocity_limits.max_velocity = positiveParam(pnh, "max_velocity", 20.0);
+  velocity_limits.max_acceleration = positiveParam(pnh, "max_acceleration", 50.0);
+  const std::map<std::string, double> effort_limits = readEffortLimits(pnh, names);
+  std::vector<hardware::ActuatorLimits> limits;
+  for (const auto& name : names) {
+    hardware::ActuatorLimits actuator = velocity_limits;
+    if (const auto effort = effort_limits.find(name); effort != effort_limits.end()) {
+      actuator.kind = hardware::ActuatorKind::Effort;
+      actuator.max_effort = effort->second;
+    }
+    limits.push_back(actuator);
+  }
   const double command_timeout = positiveParam(pnh, "command_timeout", 0.5);
   const std::vector<hardware::ActuatorModel> models = readModels(pnh, names);
   const std::uint32_t noise_seed = readNoiseSeed(pnh);
   try {
-    return hardware::SimulatedActuators(
-        names, std::vector<hardware::ActuatorLimits>(names.size(), limits), command_timeout,
-        models, noise_seed);
+    return hardware::SimulatedActuators(names, limits, command_timeout, models, noise_seed);
   } catch (const std::invalid_argument& e) {
     // The numbers are checked above, so what is left is the names (empty or duplicate).
     throw badParameter(pnh, "actuator_names", std::string("is invalid: ") + e.what());
   }
+}
+
+bool isEffortActuator(const hardware::SimulatedActuators& actuators, const std::string& name) {
+  const auto& names = actuators.names();
+  const auto it = std::find(names.begin(), names.end(), name);
+  return it != names.end() &&
+         actuators.limits()[it - names.begin()].kind == hardware::ActuatorKind::Effort;
+}
+
+/// The set-point of each actuator msg names: velocity[k] for a velocity actuator, effort[k] for
+/// an effort actuator. @return the reason if an array is too short for the names, else empty.
+std::string setpointsOf(const sensor_msgs::JointState& msg,
+                        const hardware::SimulatedActuators& actuators,
+                        std::vector<double>& setpoints) {
+  setpoints.clear();
+  for (std::size_t k = 0; k < msg.name.size(); ++k) {
+    const bool effort = isEffortActuator(actuators, msg.name[k]);
+    const std::vector<double>& values = effort ? msg.effort : msg.velocity;
+    if (k >= values.size()) {
+      std::ostringstream reason;
+      reason << "command has " << msg.name.size() << " names but " << values.size()
+             << (effort ? " efforts" : " velocities");
+      return reason.str();
+    }
+    setpoints.push_back(values[k]);
+  }
+  return {};
 }
 
 }  // namespace
@@ -152,6 +206,9 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
            actuators_.names().size(), limits.max_velocity, limits.max_acceleration,
            actuators_.commandTimeout(), state_pub_.getTopic().c_str(), rate);
   for (std::size_t i = 0; i < actuators_.names().size(); ++i) {
+    if (actuators_.limits()[i].kind == hardware::ActuatorKind::Effort)
+      ROS_INFO("hardware_interface_sim: actuator %s takes effort set-points, |effort| <= %g",
+               actuators_.names()[i].c_str(), actuators_.limits()[i].max_effort);
     const auto& model = actuators_.models()[i];
     if (model.time_constant > 0.0 || model.dead_time > 0.0 || model.position_resolution > 0.0 ||
         model.velocity_noise > 0.0)
@@ -165,7 +222,9 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
 void HardwareInterfaceSimRos::commandCallback(const sensor_msgs::JointState::ConstPtr& msg) {
   // The watchdog counts from arrival, not from header.stamp: many publishers leave it zero.
   const ros::Time now = ros::Time::now();
-  const std::string reason = actuators_.command(msg->name, msg->velocity, now.toSec());
+  std::vector<double> setpoints;
+  std::string reason = setpointsOf(*msg, actuators_, setpoints);
+  if (reason.empty()) reason = actuators_.command(msg->name, setpoints, now.toSec());
   if (reason.empty()) {
     command_input_.accept(now);
     reported_timeout_ = false;
@@ -204,6 +263,7 @@ void HardwareInterfaceSimRos::publishState(const ros::Time& stamp) {
   // The measurement (quantised, noisy if so configured), not the true state.
   state_msg_.position = actuators_.measuredPositions();
   state_msg_.velocity = actuators_.measuredVelocities();
+  state_msg_.effort = actuators_.efforts();
   state_pub_.publish(state_msg_);
 }
 
@@ -224,9 +284,15 @@ void HardwareInterfaceSimRos::diagnose(diagnostic_updater::DiagnosticStatusWrapp
   const std::string& reason = command_input_.lastReason();
   status.add("last rejection", reason.empty() ? std::string("none") : reason);
   status.add("command timeout [s]", actuators_.commandTimeout());
-  for (std::size_t i = 0; i < actuators_.names().size(); ++i)
-    status.addf(actuators_.names()[i] + " set-point, velocity [rad/s]", "%.6g, %.6g",
-                actuators_.setpoints()[i], actuators_.velocities()[i]);
+  for (std::size_t i = 0; i < actuators_.names().size(); ++i) {
+    const std::string& name = actuators_.names()[i];
+    if (actuators_.limits()[i].kind == hardware::ActuatorKind::Effort)
+      status.addf(name + " set-point, effort [N m or N]", "%.6g, %.6g", actuators_.setpoints()[i],
+                  actuators_.efforts()[i]);
+    else
+      status.addf(name + " set-point, velocity [rad/s]", "%.6g, %.6g", actuators_.setpoints()[i],
+                  actuators_.velocities()[i]);
+  }
 }
 
 }  // namespace spherical_robots

@@ -1,7 +1,8 @@
 #pragma once
-// What real velocity-controlled actuators do to their set-points, without ROS: velocity and
-// acceleration limits, a command-timeout watchdog that brings them to rest when commands stop,
-// and an e-stop latch; optionally (ActuatorModel, all off by default) a first-order lag, a dead
+// What real actuators do to their set-points, without ROS. A velocity actuator follows a rate
+// set-point within velocity and acceleration limits; an effort actuator (a torque- or
+// force-controlled motor) applies an effort set-point within its effort limit. A command-timeout
+// watchdog brings them to a safe state (rest, zero effort) when commands stop, and an e-stop latch; optionally (ActuatorModel, all off by default) a first-order lag, a dead
 // time, encoder quantisation and velocity measurement noise. The true state is advanced exactly
 // (closed form between events), so it does not depend on how often update() is called; the
 // reported measurement (quantisation, noise) is derived from it and never fed back.
@@ -14,9 +15,17 @@
 
 namespace spherical_robots::hardware {
 
+/// What an actuator's set-point is.
+enum class ActuatorKind {
+  Velocity,  ///< a rate [rad/s or m/s]; the actuator integrates its position
+  Effort,    ///< an effort [N m or N]; its motion is the load's (the plant's), not known here
+};
+
 struct ActuatorLimits {
-  double max_velocity = 10.0;      ///< |rate| limit [rad/s], finite and > 0
-  double max_acceleration = 20.0;  ///< |d rate/dt| limit [rad/s^2], finite and > 0
+  double max_velocity = 10.0;      ///< velocity actuators: |rate| limit [rad/s], finite and > 0
+  double max_acceleration = 20.0;  ///< velocity actuators: |d rate/dt| limit [rad/s^2], finite, > 0
+  double max_effort = 10.0;        ///< effort actuators: |effort| limit [N m or N], finite and > 0
+  ActuatorKind kind = ActuatorKind::Velocity;
 };
 
 /// Non-ideal behaviour of one actuator. Every field is finite and >= 0; 0 switches it off, and all
@@ -24,6 +33,7 @@ struct ActuatorLimits {
 struct ActuatorModel {
   /// First-order lag [s]: dv/dt = clamp((u - v) / time_constant, ±max_acceleration), u the active
   /// set-point. 0: v ramps to u at exactly max_acceleration (the lag's limit as tau -> 0).
+  /// For an effort actuator the applied effort lags: de/dt = (u - e) / time_constant; 0: e = u.
   double time_constant = 0.0;
   /// [s] an accepted set-point becomes active this long after it was commanded (the watchdog and
   /// the e-stop are not delayed).
@@ -42,7 +52,8 @@ class SimulatedActuators {
   /// @param names actuator names, non-empty, unique, none empty.
   /// @param limits one entry per name.
   /// @param command_timeout [s], finite and > 0: with no accepted command for this long the
-  ///        set-points become 0 and the actuators ramp to rest under their acceleration limits.
+  ///        set-points become 0: velocity actuators ramp to rest under their acceleration limits,
+  ///        effort actuators drop to zero effort at once (whatever their lag).
   /// @param models one entry per name, or empty: every actuator ideal.
   /// @param noise_seed seeds the std::mt19937 of the velocity noise: the same seed and the same
   ///        sequence of calls give the same measurements.
@@ -53,14 +64,15 @@ class SimulatedActuators {
                      double command_timeout, std::vector<ActuatorModel> models = {},
                      std::uint32_t noise_seed = 0);
 
-  /// Accepts rate set-points [rad/s] by actuator name at time t [s]. The state is first advanced
-  /// to t with the previous set-points; each set-point is then clamped to ±max_velocity and the
-  /// watchdog restarts at t. Names not mentioned keep their set-point. With a dead time the
+  /// Accepts set-points by actuator name at time t [s]: rates [rad/s] for velocity actuators,
+  /// efforts [N m or N] for effort actuators. The state is first advanced to t with the previous
+  /// set-points; each set-point is then clamped to ±max_velocity or ±max_effort and the watchdog
+  /// restarts at t. Names not mentioned keep their set-point. With a dead time the
   /// set-point becomes active dead_time after t (activeSetpoints()); setpoints() shows it at once.
   /// @return an empty string if accepted, else the reason (e-stop engaged, no names, names/values
   ///         size mismatch, unknown or duplicate name, non-finite value or time). A rejected
   ///         command changes nothing, not even the watchdog or the clock.
-  std::string command(const std::vector<std::string>& names, const std::vector<double>& velocities,
+  std::string command(const std::vector<std::string>& names, const std::vector<double>& setpoints,
                       double t);
 
   /// Advances the state to time t [s]: velocities ramp towards the active set-points at exactly
@@ -72,8 +84,8 @@ class SimulatedActuators {
   void update(double t);
 
   /// Brings everything to rest now (after advancing to t [s], if t is later than the latest time
-  /// seen): set-points (pending ones too) and velocities become 0 at once, positions hold, until
-  /// the next command. A new measurement is taken.
+  /// seen): set-points (pending ones too), velocities and efforts become 0 at once, positions
+  /// hold, until the next command. A new measurement is taken.
   void stop(double t);
 
   /// Engages (stop(t), then every command is rejected) or releases the e-stop latch. Releasing
@@ -89,13 +101,16 @@ class SimulatedActuators {
   /// True state, used for the integration.
   const std::vector<double>& velocities() const { return velocities_; }  ///< [rad/s]
   const std::vector<double>& positions() const { return positions_; }    ///< [rad], from 0
+  /// Applied efforts [N m or N]: the (lagged) set-points of effort actuators, 0 for velocity ones.
+  const std::vector<double>& efforts() const { return efforts_; }
+  /// Velocities and positions of effort actuators stay 0: the load's motion is the plant's.
   /// The reported measurement, taken at the latest update() or stop(): the true position rounded
   /// to position_resolution, the true velocity plus noise (not differenced from the quantised
   /// positions, so it does not depend on the update rate). Equal to the true state when the
   /// model is off.
   const std::vector<double>& measuredVelocities() const { return measured_velocities_; }
   const std::vector<double>& measuredPositions() const { return measured_positions_; }
-  /// Latest accepted set-points, clamped [rad/s].
+  /// Latest accepted set-points, clamped [rad/s or N m, N].
   const std::vector<double>& setpoints() const { return setpoints_; }
   /// The set-points the actuators follow now: setpoints() delayed by the dead time [rad/s].
   const std::vector<double>& activeSetpoints() const { return active_setpoints_; }
@@ -113,7 +128,9 @@ class SimulatedActuators {
 
   /// Advances velocities and positions by dt [s] >= 0 towards the active set-points.
   void integrate(double dt);
-  /// Sets every set-point, active and pending, to 0.
+  /// Effort actuators without lag apply their active set-point at once.
+  void applyInstantEfforts();
+  /// Sets every set-point, active and pending, to 0, and every effort.
   void zeroSetpoints();
   /// Recomputes the measurement from the true state, drawing fresh noise.
   void measure();
@@ -127,6 +144,7 @@ class SimulatedActuators {
   std::vector<std::deque<Pending>> pending_;  ///< per actuator, in time order
   std::vector<double> velocities_;
   std::vector<double> positions_;
+  std::vector<double> efforts_;
   std::vector<double> measured_velocities_;
   std::vector<double> measured_positions_;
   std::mt19937 noise_engine_;
