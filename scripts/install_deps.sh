@@ -22,6 +22,8 @@ packages=(
   python3-std-msgs python3-tf2-ros python3-tf2-msgs python3-visualization-msgs
   ros-robot-state-publisher rviz xvfb xauth x11-utils imagemagick
   python3-numpy python3-matplotlib
+  # scripts/derive_norma_dynamics.py
+  python3-sympy
 )
 missing=()
 for p in "${packages[@]}"; do
