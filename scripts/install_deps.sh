@@ -23,6 +23,8 @@ packages=(
   python3-diagnostic-updater
   ros-robot-state-publisher rviz xvfb xauth x11-utils imagemagick
   python3-numpy python3-matplotlib
+  # scripts/derive_norma_dynamics.py
+  python3-sympy
 )
 missing=()
 for p in "${packages[@]}"; do
