@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""rostest of the stacks built on the terrain plant (launch/terrain_stack.launch,
-launch/roller_stack.launch), headless, in simulated time.
+"""rostest of the stacks (launch/terrain_stack.launch, launch/roller_stack.launch,
+launch/norma_stack.launch), headless, in simulated time.
 
 Runs in the stack's namespace (test/terrain_*.test, test/roller_*.test). Private params: ~mode
-(tracking | teleop | seam | roller; see the classes) and ~frame_prefix. Times are simulated (the plant owns
+(tracking | teleop | seam | roller | norma; see the classes) and ~frame_prefix. Times are simulated (the plant owns
 /clock), bounded by generous wall-clock deadlines; tolerances are generous where the machine's load
 matters (tracking error) and tight where the maths is exact (the contact point lies on the surface,
 which the plant never integrates off).
@@ -23,7 +23,7 @@ from nav_msgs.msg import Odometry, Path
 from sensor_msgs.msg import JointState
 from std_msgs.msg import Bool
 
-from spherical_robots.msg import RollerDrive, TerrainState, TrackingError
+from spherical_robots.msg import NormaState, RollerDrive, TerrainState, TrackingError
 
 PKG = 'spherical_robots'
 NAME = 'stack_check'
@@ -121,9 +121,7 @@ class StackFixture(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.prefix = rospy.get_param('~frame_prefix', rospy.get_namespace().strip('/') + '/')
-        cls.amplitude = float(rospy.get_param('terrain/surface/amplitude'))
-        cls.frequency = float(rospy.get_param('terrain/surface/frequency'))
-        cls.radius = 0.2  # urdf/terrain_robot.urdf
+        cls.radius = 0.2  # urdf/terrain_robot.urdf and urdf/norma.urdf
         cls.odom = Recorder('odom', Odometry)
         cls.states = Recorder('terrain_state', TerrainState)
         cls.actuators = Recorder('actuators/state', JointState)
@@ -134,7 +132,9 @@ class StackFixture(unittest.TestCase):
 
     def surface_height(self, x, y):
         """Paper eq 59 with config/terrain.yaml's a and w."""
-        return self.amplitude * (math.cos(self.frequency * x) + math.cos(self.frequency * y) - 2.0)
+        amplitude = float(rospy.get_param('terrain/surface/amplitude'))
+        frequency = float(rospy.get_param('terrain/surface/frequency'))
+        return amplitude * (math.cos(frequency * x) + math.cos(frequency * y) - 2.0)
 
     def diagnostic_value(self, status_suffix, key):
         """The latest value of `key` in the /diagnostics status whose name ends with the suffix."""
@@ -146,8 +146,8 @@ class StackFixture(unittest.TestCase):
                             return pair.value
         return None
 
-    def assert_nodes_alive(self):
-        for node in NODES:
+    def assert_nodes_alive(self, nodes=NODES):
+        for node in nodes:
             name = rospy.resolve_name(node)
             self.assertTrue(rosnode.rosnode_ping(name, max_count=1), name + ' does not answer')
 
@@ -403,8 +403,72 @@ class RollerCheck(SeamCheck):
         self.assertGreater(largest, 0.01, 'no slip at all with alpha1 = -alpha2 != 0')
 
 
+class NormaCheck(StackFixture):
+    """mode:=norma: Norma's stack with the paper's controller (eqs 48-51, Table 1) on eq 52, over
+    the first ~norma_window simulated seconds. Bounds from the batch run of the same closed loop
+    (docs/results.md): there |e| stays below 0.022 m over t in [0, 30] s, the slider within
+    1 mm of rest and |T| below 1.9 N m; the stack, a 1 kHz sampled loop through the hardware
+    interface, must stay within ~error_bound of the path and end within ~batch_tolerance of the
+    batch's position at the window's end (~batch_x, ~batch_y)."""
+
+    @classmethod
+    def setUpClass(cls):
+        super().setUpClass()
+        cls.errors = Recorder('tracking_error', TrackingError)
+        cls.norma_states = Recorder('norma_state', NormaState)
+        cls.joint_states = Recorder('joint_states', JointState)
+        cls.window = float(rospy.get_param('~norma_window', 30.0))
+
+    def test_01_tracks_like_the_batch_run(self):
+        wait_until(lambda: self.norma_states.count() > 0 and
+                   self.norma_states.last().header.stamp.to_sec() >= self.window,
+                   '%.0f s of simulated time' % self.window, timeout=3 * WALL_DEADLINE)
+        end = next(m for m in self.norma_states.since(0) if m.header.stamp.to_sec() >= self.window)
+        worst = max(m.error_norm for m in self.errors.since(0)
+                    if m.header.stamp.to_sec() <= self.window)
+        batch = (float(rospy.get_param('~batch_x')), float(rospy.get_param('~batch_y')))
+        offset = math.dist((end.x, end.y), batch)
+        rospy.loginfo('norma: at t = %.3f s centre (%.4f, %.4f) m, batch (%.4f, %.4f): %.2e m '
+                      'apart; max |e| %.4f m', end.header.stamp.to_sec(), end.x, end.y,
+                      batch[0], batch[1], offset, worst)
+        self.assertLess(worst, float(rospy.get_param('~error_bound')))
+        self.assertLess(offset, float(rospy.get_param('~batch_tolerance')))
+        for m in self.norma_states.since(0):
+            self.assertTrue(all(math.isfinite(v) for v in list(m.q) + list(m.qd) + [m.energy]))
+            self.assertLessEqual(abs(0.1 + m.q[3]), 0.2, 'the slider left the shaft')
+
+    def test_02_joint_states_and_tf(self):
+        wait_until(lambda: self.joint_states.count() > 0, 'joint_states')
+        msg = self.joint_states.last()
+        self.assertEqual(list(msg.name), ['shaft_tilt', 'shell_roll', 'pendulum', 'slider'])
+        state = self.norma_states.last()
+        # The pendulum's joint is beta = alpha - theta (urdf/norma.urdf); at most one 20 ms
+        # publishing period apart from the last state.
+        self.assertAlmostEqual(msg.position[2], state.q[1] - state.q[0],
+                               delta=0.05)
+        for child in ('base_link', 'shaft', 'shell', 'pendulum', 'slider'):
+            transform = self.tf_buffer.lookup_transform('world', self.prefix + child,
+                                                        rospy.Time(0), rospy.Duration(10.0))
+            t = transform.transform.translation
+            self.assertTrue(all(math.isfinite(v) for v in (t.x, t.y, t.z)), child)
+        base = self.tf_buffer.lookup_transform('world', self.prefix + 'base_link', rospy.Time(0))
+        self.assertAlmostEqual(base.transform.translation.z, self.radius, delta=1e-9)
+
+    def test_03_bad_efforts_kill_nothing(self):
+        publisher = rospy.Publisher('actuators/state', JointState, queue_size=10)
+        bad = JointState(name=['pendulum_motor', 'slider_motor'], effort=[float('nan'), 0.0])
+        publish_until(publisher, [bad],
+                      lambda: self.rejected_count('norma_dynamics: norma plant',
+                                                  'actuators/state') >= 1,
+                      'the plant to report a rejected actuators/state on /diagnostics')
+        self.assert_still_publishing([self.odom, self.norma_states])
+        self.assert_nodes_alive(['norma_dynamics', 'pure_pursuit_controller',
+                                 'hardware_interface', 'robot_state_publisher'])
+        self.assertTrue(all(math.isfinite(v) for v in self.norma_states.last().q))
+
+
 if __name__ == '__main__':
     rospy.init_node(NAME)
     mode = rospy.get_param('~mode', 'tracking')
     rostest.rosrun(PKG, NAME, {'teleop': TeleopCheck, 'seam': SeamCheck,
-                               'roller': RollerCheck}.get(mode, TrackingCheck))
+                               'roller': RollerCheck, 'norma': NormaCheck}.get(mode, TrackingCheck))

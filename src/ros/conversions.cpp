@@ -112,24 +112,39 @@ nav_msgs::Odometry toOdometry(const Eigen::Vector3d& position, const Eigen::Quat
   return msg;
 }
 
-std::vector<double> velocitiesByName(const sensor_msgs::JointState& msg,
-                                     const std::vector<std::string>& names) {
-  if (msg.velocity.size() < msg.name.size()) {
-    std::ostringstream what;
-    what << "JointState has " << msg.name.size() << " names but " << msg.velocity.size()
-         << " velocities";
-    throw std::invalid_argument(what.str());
+namespace {
+
+/// values[k] of each named actuator (values: msg.velocity or msg.effort, called `what`).
+std::vector<double> valuesByName(const sensor_msgs::JointState& msg, const std::vector<double>& values,
+                                 const std::string& what, const std::vector<std::string>& names) {
+  if (values.size() < msg.name.size()) {
+    std::ostringstream problem;
+    problem << "JointState has " << msg.name.size() << " names but " << values.size() << " "
+            << what << " values";
+    throw std::invalid_argument(problem.str());
   }
-  std::vector<double> velocities;
+  std::vector<double> found_values;
   for (const std::string& name : names) {
     const auto found = std::find(msg.name.begin(), msg.name.end(), name);
     if (found == msg.name.end())
       throw std::invalid_argument("JointState lacks actuator '" + name + "'");
-    const double velocity = msg.velocity[found - msg.name.begin()];
-    requireFinite(velocity, "velocity of actuator '" + name + "'");
-    velocities.push_back(velocity);
+    const double value = values[found - msg.name.begin()];
+    requireFinite(value, what + " of actuator '" + name + "'");
+    found_values.push_back(value);
   }
-  return velocities;
+  return found_values;
+}
+
+}  // namespace
+
+std::vector<double> velocitiesByName(const sensor_msgs::JointState& msg,
+                                     const std::vector<std::string>& names) {
+  return valuesByName(msg, msg.velocity, "velocity", names);
+}
+
+std::vector<double> effortsByName(const sensor_msgs::JointState& msg,
+                                  const std::vector<std::string>& names) {
+  return valuesByName(msg, msg.effort, "effort", names);
 }
 
 sensor_msgs::JointState velocityJointState(const std::vector<std::string>& names,

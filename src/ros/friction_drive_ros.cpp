@@ -11,6 +11,7 @@
 #include "spherical_robots/config/roller_config.hpp"
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
+#include "spherical_robots/ros/sim_clock.hpp"
 
 namespace spherical_robots {
 namespace {
@@ -128,8 +129,7 @@ void FrictionDriveSimRos::onActuatorState(const sensor_msgs::JointState& msg) {
   drive_pub_.publish(drive);
 
   const ros::Time now = ros::Time::now();
-  if (last_markers_.isZero() || now < last_markers_ ||
-      (now - last_markers_).toSec() >= marker_period_ - 1e-9) {
+  if (periodDue(last_markers_, now, marker_period_)) {
     last_markers_ = now;
     publishMarkers(state, msg.header.stamp);
   }

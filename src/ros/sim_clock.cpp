@@ -10,6 +10,10 @@
 
 namespace spherical_robots {
 
+bool periodDue(const ros::Time& last, const ros::Time& now, double period) {
+  return last.isZero() || now < last || (now - last).toSec() >= period - 1e-9;
+}
+
 SimClock::SimClock(ros::NodeHandle nh, double step, double speedup, Tick tick, Ready ready,
                    double ready_timeout)
     : step_(step), speedup_(speedup), tick_(std::move(tick)), ready_(std::move(ready)),

@@ -18,10 +18,6 @@ namespace {
 const std::string kWorldFrame = "world";
 constexpr std::size_t kMaxTrailPoints = 2000;
 
-/// Whether a periodic action last done at `last` is due again at `now` (also after a time jump back).
-bool due(const ros::Time& last, const ros::Time& now, double period) {
-  return last.isZero() || now < last || (now - last).toSec() >= period - 1e-9;
-}
 
 }  // namespace
 
@@ -98,8 +94,8 @@ void TerrainPlantRos::tick(const ros::Time& now) {
   }
   last_tick_ = now;
 
-  if (due(last_publish_, now, publish_period_)) publishState(now, rates);
-  if (due(last_trail_, now, trail_period_)) extendTrail(now);
+  if (periodDue(last_publish_, now, publish_period_)) publishState(now, rates);
+  if (periodDue(last_trail_, now, trail_period_)) extendTrail(now);
   updater_.update();
 
   if (duration_ > 0.0 && (now - start_).toSec() >= duration_ - 1e-9) {

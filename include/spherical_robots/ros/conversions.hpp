@@ -70,6 +70,10 @@ nav_msgs::Odometry toOdometry(const Eigen::Vector3d& position, const Eigen::Quat
 std::vector<double> velocitiesByName(const sensor_msgs::JointState& msg,
                                      const std::vector<std::string>& names);
 
+/// The effort [N m or N] of each named actuator in msg, as velocitiesByName.
+std::vector<double> effortsByName(const sensor_msgs::JointState& msg,
+                                  const std::vector<std::string>& names);
+
 /// A JointState with these names and velocities [rad/s] (no positions, no efforts).
 sensor_msgs::JointState velocityJointState(const std::vector<std::string>& names,
                                            const std::vector<double>& velocities,

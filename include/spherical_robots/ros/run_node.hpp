@@ -8,11 +8,10 @@
 
 namespace spherical_robots {
 
-/// Initialises ROS as `name`, constructs Node(nh, private nh) and spins. A construction error is a
-/// start-up failure: ROS_FATAL "<name> cannot start: <what>" and exit status 1.
+/// After ros::init: constructs Node(nh, private nh) and spins. A construction error is a start-up
+/// failure: ROS_FATAL "<name> cannot start: <what>" and exit status 1.
 template <typename Node>
-int runNode(int argc, char** argv, const char* name) {
-  ros::init(argc, argv, name);
+int spinNode(const char* name) {
   // Outside the try: destroying the last handle shuts ROS (and rosconsole) down before ROS_FATAL.
   ros::NodeHandle nh, pnh("~");
   std::optional<Node> node;
@@ -24,6 +23,13 @@ int runNode(int argc, char** argv, const char* name) {
   }
   ros::spin();  // outside the try: a runtime error is not a start-up failure
   return 0;
+}
+
+/// Initialises ROS as `name`, then spinNode<Node>.
+template <typename Node>
+int runNode(int argc, char** argv, const char* name) {
+  ros::init(argc, argv, name);
+  return spinNode<Node>(name);
 }
 
 }  // namespace spherical_robots

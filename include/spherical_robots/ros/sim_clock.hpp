@@ -10,6 +10,10 @@
 
 namespace spherical_robots {
 
+/// Whether a periodic action last done at `last` (zero: never) is due again at `now`, also after
+/// ROS time jumped back (a replayed or restarted clock).
+bool periodDue(const ros::Time& last, const ros::Time& now, double period);
+
 /// With speedup > 0 it owns simulated time (there must be exactly one such clock per master, and
 /// /use_sim_time must be true): a wall timer advances /clock by `step` every step / speedup wall
 /// seconds and then calls tick with the new time, so a slow tick lowers the speed-up but never

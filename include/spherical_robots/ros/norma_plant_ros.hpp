@@ -1,0 +1,69 @@
+#pragma once
+// The norma_dynamics plant node: Norma (eq 46, eqs 6 and 12) integrated from the measured
+// pendulum torque and slider force of the hardware interface, published as its state, odometry,
+// joint states and tf.
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <nav_msgs/Path.h>
+#include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include <memory>
+#include <string>
+
+#include "spherical_robots/norma/norma_plant.hpp"
+#include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/sim_clock.hpp"
+
+namespace spherical_robots {
+
+/// Parameters (private, ~): variant (text | appendix, "text": docs/errata.md); frame_prefix ("");
+/// step [s] (0.001): the tick and the RK4 step; publish_rate [Hz] (50): odom, joint_states, tf;
+/// trail_period [s] (0.5); publish_clock (false), speedup (1), wait_for_subscribers (1),
+/// start_timeout [s] (10): as terrain_kinematics; duration [s] (0 = forever); state_timeout [s]
+/// (0.05): older measured efforts count as zero; initial_psi [rad] (0).
+/// In the node handle's namespace: robot_description (urdf/norma.urdf: masses and lengths).
+/// Subscribes actuators/state (efforts of pendulum_motor [N m] and slider_motor [N]). Publishes
+/// norma_state (every tick), odom, joint_states (shaft_tilt, shell_roll, pendulum, slider),
+/// tf world -> <prefix>base_link (centre, heading), trail and /diagnostics.
+class NormaPlantRos {
+ public:
+  /// @throw std::invalid_argument on a bad parameter or URDF.
+  NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh);
+
+ private:
+  void onActuatorState(const sensor_msgs::JointState& msg);
+  void tick(const ros::Time& now);
+  void publishState(const ros::Time& now);
+  void publishPose(const ros::Time& now);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  norma::NormaDynamics dynamics_;
+  std::string base_frame_;
+  double step_;
+  double duration_;
+  double publish_period_;
+  double trail_period_;
+  norma::NormaState state_;
+  double torque_ = 0.0;  ///< measured T [N m]
+  double force_ = 0.0;   ///< measured F [N]
+  unsigned long integration_failures_ = 0;
+  ros::Time start_;
+  ros::Time last_tick_;
+  ros::Time last_publish_;
+  ros::Time last_trail_;
+  bool finished_ = false;
+  InputMonitor actuator_input_;
+  ros::Subscriber actuator_sub_;
+  ros::Publisher state_pub_;
+  ros::Publisher odom_pub_;
+  ros::Publisher joint_pub_;
+  ros::Publisher trail_pub_;
+  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  diagnostic_updater::Updater updater_;
+  nav_msgs::Path trail_;
+  std::unique_ptr<SimClock> clock_;  ///< last: it ticks only once everything else exists
+};
+
+}  // namespace spherical_robots

@@ -1,0 +1,188 @@
+#include "spherical_robots/ros/norma_plant_ros.hpp"
+
+#include <nav_msgs/Odometry.h>
+
+#include <Eigen/Geometry>
+#include <stdexcept>
+#include <vector>
+
+#include "spherical_robots/NormaState.h"
+#include "spherical_robots/config/norma_description.hpp"
+#include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/ros/ros_parameter_source.hpp"
+
+namespace spherical_robots {
+namespace {
+
+const std::string kWorldFrame = "world";
+const std::vector<std::string> kActuators = {"pendulum_motor", "slider_motor"};
+const std::vector<std::string> kJoints = {"shaft_tilt", "shell_roll", "pendulum", "slider"};
+constexpr std::size_t kMaxTrailPoints = 4000;
+
+norma::LagrangianVariant variantFromString(const std::string& name) {
+  if (name == "text") return norma::LagrangianVariant::kText;
+  if (name == "appendix") return norma::LagrangianVariant::kAppendix;
+  throw std::invalid_argument("unknown variant (text | appendix)");
+}
+
+norma::NormaParameters parametersFromRobotDescription(const ros::NodeHandle& nh) {
+  std::string urdf;
+  if (!nh.getParam("robot_description", urdf))
+    throw std::invalid_argument("parameter " + nh.resolveName("robot_description") +
+                                " (urdf/norma.urdf) is required");
+  return config::normaParametersFromUrdf(urdf);
+}
+
+}  // namespace
+
+NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
+    : dynamics_(parametersFromRobotDescription(nh),
+                parsedParam(pnh, "variant", "text", variantFromString)),
+      base_frame_(stringParam(pnh, "frame_prefix", "") + "base_link"),
+      step_(positiveParam(pnh, "step", 0.001)),
+      duration_(numberParam(pnh, "duration", 0.0)),
+      publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
+      trail_period_(positiveParam(pnh, "trail_period", 0.5)),
+      actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.05)),
+      updater_(nh, pnh) {
+  state_.psi = numberParam(pnh, "initial_psi", 0.0);
+  actuator_sub_ = nh.subscribe("actuators/state", 10, &NormaPlantRos::onActuatorState, this);
+  state_pub_ = nh.advertise<spherical_robots::NormaState>("norma_state", 10);
+  odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
+  joint_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
+  trail_pub_ = nh.advertise<nav_msgs::Path>("trail", 1);
+  trail_.header.frame_id = kWorldFrame;
+
+  updater_.setHardwareID("Norma");
+  updater_.add("norma plant", this, &NormaPlantRos::diagnose);
+
+  const bool publish_clock = boolParam(pnh, "publish_clock", false);
+  const double speedup = publish_clock ? numberParam(pnh, "speedup", 1.0) : 0.0;
+  const auto& p = dynamics_.parameters();
+  ROS_INFO_STREAM("Norma: R = " << p.R << " m, L = " << p.L << " m, L0 = " << p.L0
+                                << " m, delta0 = " << p.delta0 << " m, masses shell "
+                                << p.m_shell << ", shaft " << p.m_shaft << ", pendulum "
+                                << p.m_pendulum << ", slider " << p.m_slider << " kg; step "
+                                << step_ << " s");
+  const int expected_subscribers = static_cast<int>(numberParam(pnh, "wait_for_subscribers", 1.0));
+  clock_ = std::make_unique<SimClock>(
+      nh, step_, speedup, [this](const ros::Time& now) { tick(now); },
+      [this, expected_subscribers] {
+        return static_cast<int>(state_pub_.getNumSubscribers()) >= expected_subscribers &&
+               actuator_sub_.getNumPublishers() > 0;
+      },
+      positiveParam(pnh, "start_timeout", 10.0));
+}
+
+void NormaPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
+  try {
+    const std::vector<double> efforts = conversions::effortsByName(msg, kActuators);
+    torque_ = efforts[0];
+    force_ = efforts[1];
+    actuator_input_.accept(ros::Time::now());
+  } catch (const std::invalid_argument& e) {
+    actuator_input_.reject(e.what());
+  }
+}
+
+void NormaPlantRos::tick(const ros::Time& now) {
+  if (finished_) return;
+  const bool fresh = actuator_input_.fresh(now);
+  if (start_.isZero()) {
+    start_ = now;
+  } else if (now > last_tick_) {
+    try {
+      state_ = norma::advanceWithHeldInputs(dynamics_, state_, fresh ? torque_ : 0.0,
+                                            fresh ? force_ : 0.0, (now - last_tick_).toSec(), step_);
+    } catch (const std::exception& e) {
+      ++integration_failures_;
+      ROS_ERROR_STREAM_THROTTLE(1.0, "Integration failed (" << integration_failures_
+                                                            << " so far), holding the last good "
+                                                               "state: " << e.what());
+    }
+  } else {
+    ROS_WARN_STREAM_THROTTLE(1.0, "ROS time went from " << last_tick_ << " back to " << now
+                                                        << " s; holding the state");
+  }
+  last_tick_ = now;
+  publishState(now);
+  if (periodDue(last_publish_, now, publish_period_)) publishPose(now);
+  updater_.update();
+
+  if (duration_ > 0.0 && (now - start_).toSec() >= duration_ - 1e-9) {
+    ROS_INFO_STREAM("scenario complete after " << duration_ << " s, centre at (" << state_.x
+                                               << ", " << state_.y << ") m");
+    finished_ = true;
+    ros::shutdown();
+  }
+}
+
+void NormaPlantRos::publishState(const ros::Time& now) {
+  spherical_robots::NormaState msg;
+  msg.header.stamp = now;
+  for (int i = 0; i < 4; ++i) {
+    msg.q[i] = state_.q(i);
+    msg.qd[i] = state_.qd(i);
+  }
+  msg.x = state_.x;
+  msg.y = state_.y;
+  msg.psi = state_.psi;
+  const bool fresh = actuator_input_.fresh(now);
+  msg.torque = fresh ? torque_ : 0.0;
+  msg.force = fresh ? force_ : 0.0;
+  msg.energy = dynamics_.totalEnergy(state_.q, state_.qd);
+  state_pub_.publish(msg);
+}
+
+void NormaPlantRos::publishPose(const ros::Time& now) {
+  last_publish_ = now;
+  const Eigen::Vector3d centre(state_.x, state_.y, dynamics_.parameters().R);
+  const Eigen::Quaterniond heading(Eigen::AngleAxisd(state_.psi, Eigen::Vector3d::UnitZ()));
+  const norma::PlanarRates rates = dynamics_.planarRates(state_.q, state_.qd, state_.psi);
+  odom_pub_.publish(conversions::toOdometry(centre, heading, {rates.x_dot, rates.y_dot, 0.0},
+                                            {0.0, 0.0, rates.psi_dot}, kWorldFrame, base_frame_,
+                                            now));
+  tf_broadcaster_.sendTransform(
+      conversions::toTransform(centre, heading, kWorldFrame, base_frame_, now));
+  // URDF joints (urdf/norma.urdf): the pendulum's joint angle is beta = alpha - theta.
+  const norma::Vector4& q = state_.q;
+  const norma::Vector4& qd = state_.qd;
+  sensor_msgs::JointState joints;
+  joints.header.stamp = now;
+  joints.name = kJoints;
+  joints.position = {q(2), q(0), q(1) - q(0), q(3)};
+  joints.velocity = {qd(2), qd(0), qd(1) - qd(0), qd(3)};
+  joint_pub_.publish(joints);
+
+  if (periodDue(last_trail_, now, trail_period_)) {
+    last_trail_ = now;
+    trail_.header.stamp = now;
+    trail_.poses.push_back(conversions::toPoseStamped({state_.x, state_.y, 0.0}, heading,
+                                                      kWorldFrame, now));
+    if (trail_.poses.size() > kMaxTrailPoints) trail_.poses.erase(trail_.poses.begin());
+    trail_pub_.publish(trail_);
+  }
+}
+
+void NormaPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  const ros::Time now = ros::Time::now();
+  status.summary(diagnostic_msgs::DiagnosticStatus::OK, "rolling");
+  status.add("variant", dynamics_.variant() == norma::LagrangianVariant::kText ? "text" : "appendix");
+  status.add("time since start [s]", (now - start_).toSec());
+  status.add("X [m]", state_.x);
+  status.add("Y [m]", state_.y);
+  status.add("psi [rad]", state_.psi);
+  status.add("phi [rad]", state_.q(2));
+  status.add("delta [m]", state_.q(3));
+  status.add("real-time factor", clock_->realTimeFactor());
+  status.add("integration failures", integration_failures_);
+  if (integration_failures_ > 0)
+    status.mergeSummary(diagnostic_msgs::DiagnosticStatus::ERROR, "integration failed");
+  // The slider leaves the shaft's ends (|delta0 + delta| > R): the model no longer holds.
+  const auto& p = dynamics_.parameters();
+  if (std::abs(p.delta0 + state_.q(3)) > p.R)
+    status.mergeSummary(diagnostic_msgs::DiagnosticStatus::WARN, "slider beyond the shaft's end");
+  actuator_input_.report(status, now);
+}
+
+}  // namespace spherical_robots
