@@ -1,0 +1,120 @@
+// Norma as the stack's plant (norma_plant.hpp, norma_description.hpp): the URDF gives section 5's
+// parameters; held-input RK4 steps conserve energy with no input, agree with the adaptive
+// open-loop run of the same model, and reject bad input.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "spherical_robots/config/norma_description.hpp"
+#include "spherical_robots/config/robot_description.hpp"
+#include "spherical_robots/norma/norma_plant.hpp"
+#include "spherical_robots/norma/norma_simulation.hpp"
+
+namespace {
+
+using namespace spherical_robots;
+using norma::NormaState;
+
+std::string normaUrdf() {
+  return config::readTextFile(std::string(SPHERICAL_ROBOTS_SOURCE_DIR) + "/urdf/norma.urdf");
+}
+
+TEST(NormaDescription, TheUrdfHoldsSection5sParameters) {
+  const norma::NormaParameters p = config::normaParametersFromUrdf(normaUrdf());
+  // Section 5: R = 0.2, L = 0.15, L0 = 0.10, delta0 = 0.1 m; m_Sp = 3 kg (shell + shaft),
+  // m_Shf = m_P = m_Sl = 0.5 kg.
+  EXPECT_DOUBLE_EQ(p.R, 0.2);
+  EXPECT_DOUBLE_EQ(p.L, 0.15);
+  EXPECT_DOUBLE_EQ(p.L0, 0.10);
+  EXPECT_DOUBLE_EQ(p.delta0, 0.1);
+  EXPECT_DOUBLE_EQ(p.m_shell + p.m_shaft, 3.0);
+  EXPECT_DOUBLE_EQ(p.m_shaft, 0.5);
+  EXPECT_DOUBLE_EQ(p.m_pendulum, 0.5);
+  EXPECT_DOUBLE_EQ(p.m_slider, 0.5);
+}
+
+TEST(NormaDescription, AMalformedUrdfIsRejectedNamingThePart) {
+  std::string urdf = normaUrdf();
+  // The slider link without its <inertial>: no mass to read.
+  const std::size_t link = urdf.find("<link name=\"slider\">");
+  const std::size_t begin = urdf.find("<inertial>", link);
+  const std::size_t end = urdf.find("</inertial>", begin) + std::string("</inertial>").size();
+  urdf.erase(begin, end - begin);
+  try {
+    config::normaParametersFromUrdf(urdf);
+    FAIL() << "a URDF without the slider's mass was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("slider"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(config::normaParametersFromUrdf("<robot"), std::invalid_argument);
+}
+
+NormaState swinging() {
+  NormaState s;
+  s.q = norma::Vector4(0.1, 0.6, 0.05, 0.0);
+  s.qd = norma::Vector4(0.3, -0.5, 0.1, 0.0);
+  return s;
+}
+
+TEST(NormaPlant, WithNoInputTheEnergyIsConservedOverManyHeldSteps) {
+  const norma::NormaDynamics dynamics(norma::NormaParameters{});
+  NormaState state = swinging();
+  const double e0 = dynamics.totalEnergy(state.q, state.qd);
+  for (int tick = 0; tick < 2000; ++tick)  // 2 s of 1 ms ticks, as the node steps
+    state = norma::advanceWithHeldInputs(dynamics, state, 0.0, 0.0, 1e-3, 1e-3);
+  EXPECT_NEAR(dynamics.totalEnergy(state.q, state.qd), e0, 1e-9 * std::abs(e0) + 1e-10);
+}
+
+TEST(NormaPlant, AgreesWithTheAdaptiveOpenLoopRun) {
+  const norma::NormaParameters parameters;
+  const norma::NormaDynamics dynamics(parameters);
+  norma::OpenLoopConfig config;
+  config.q0 = swinging().q;
+  config.qd0 = swinging().qd;
+  config.duration = 1.0;
+  config.log_rate = 1.0;
+  config.ode.rtol = 1e-11;
+  config.ode.atol = 1e-13;
+  const norma::NormaSample reference = norma::runOpenLoop(parameters, config).back();
+  const NormaState state =
+      norma::advanceWithHeldInputs(dynamics, swinging(), 0.0, 0.0, 1.0, 1e-3);
+  EXPECT_LT((state.q - reference.q).norm(), 1e-8);
+  EXPECT_LT((state.qd - reference.qd).norm(), 1e-8);
+  EXPECT_NEAR(state.x, reference.x, 1e-8);
+  EXPECT_NEAR(state.y, reference.y, 1e-8);
+  EXPECT_NEAR(state.psi, reference.psi, 1e-8);
+}
+
+TEST(NormaPlant, HeldEffortsActOnTheirJoints) {
+  // U = [0, T, 0, F] (virtual work): from rest, T > 0 raises the pendulum's angle beta = alpha -
+  // theta and F > 0 pushes the slider outward. M has no alpha-delta entry (A.3-A.21), so the
+  // torque moves the slider only through the velocity terms: by 2e-8 m in 20 ms.
+  const norma::NormaDynamics dynamics(norma::NormaParameters{});
+  const NormaState torque = norma::advanceWithHeldInputs(dynamics, NormaState{}, 0.2, 0.0, 0.02, 1e-3);
+  EXPECT_GT(torque.q(1) - torque.q(0), 0.0);
+  EXPECT_NEAR(torque.q(3), 0.0, 1e-6);
+  const NormaState force = norma::advanceWithHeldInputs(dynamics, NormaState{}, 0.0, 1.0, 0.02, 1e-3);
+  EXPECT_GT(force.q(3), 0.0);
+}
+
+TEST(NormaPlant, RejectsBadInput) {
+  const norma::NormaDynamics dynamics(norma::NormaParameters{});
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(norma::advanceWithHeldInputs(dynamics, NormaState{}, nan, 0.0, 1e-3, 1e-3),
+               std::invalid_argument);
+  EXPECT_THROW(norma::advanceWithHeldInputs(dynamics, NormaState{}, 0.0, 0.0, -1.0, 1e-3),
+               std::invalid_argument);
+  EXPECT_THROW(norma::advanceWithHeldInputs(dynamics, NormaState{}, 0.0, 0.0, 1e-3, 0.0),
+               std::invalid_argument);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
