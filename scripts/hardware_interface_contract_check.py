@@ -168,6 +168,8 @@ class HardwareInterfaceSimCheck(unittest.TestCase):
         self.assertAlmostEqual(self.velocity(state, phi), within[phi], delta=EXACT)
         self.assertAlmostEqual(self.velocity(state, psi), self.max_velocity, delta=EXACT,
                                msg='100 rad/s must settle at max_velocity')
+        self.waitFor(lambda: int(self.diagnostics()[1][psi + ' saturated set-points']) > 0, 5.0,
+                     'diagnostics to count the clamped set-points of ' + psi)
         # Every published velocity is within the limit, and between consecutive stamps no
         # actuator changed faster than max_acceleration (stamps are the node's update times).
         states = self.statesSince(start)

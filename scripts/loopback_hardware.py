@@ -90,6 +90,7 @@ class LoopbackHardware:
         self.velocities = [0.0] * count
         self.positions = [0.0] * count
         self.efforts = [0.0] * count
+        self.saturations = [0] * count
         self.last_update = None
         self.last_accepted = None  # ROS time of the last accepted command
         self.timed_out = False
@@ -171,6 +172,9 @@ class LoopbackHardware:
             for k, name in enumerate(msg.name):
                 i = self.names.index(name)
                 self.setpoints[i] = self.setpoint_of(msg, k)
+                requested = msg.effort[k] if name in self.effort_limits else msg.velocity[k]
+                if self.setpoints[i] != requested:
+                    self.saturations[i] += 1
                 if name in self.effort_limits:
                     self.efforts[i] = self.setpoints[i]
             self.accepted += 1
@@ -221,6 +225,9 @@ class LoopbackHardware:
             status.add('rejected commands', str(self.rejected))
             status.add('last rejection', self.last_rejection)
             status.add('command timeout [s]', str(self.timeout))
+            age = (rospy.get_time() - self.last_accepted if self.last_accepted is not None
+                   else float('nan'))
+            status.add('command age [s]', str(age))
             for i, name in enumerate(self.names):
                 if name in self.effort_limits:
                     status.add(name + ' set-point, effort [N m or N]',
@@ -228,6 +235,7 @@ class LoopbackHardware:
                 else:
                     status.add(name + ' set-point, velocity [rad/s]',
                                '%.6g, %.6g' % (self.setpoints[i], self.velocities[i]))
+                status.add(name + ' saturated set-points', str(self.saturations[i]))
         return status
 
 

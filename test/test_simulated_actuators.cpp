@@ -561,6 +561,18 @@ TEST(SimulatedActuatorModels, BadModelValuesAreRejectedNamingActuatorAndField) {
   EXPECT_TRUE(contains(error({ActuatorModel{}, {-2.0, 0, 0, 0}}), "got -2"));
 }
 
+TEST(SimulatedActuators, CountsSaturatedSetPointsAndTheCommandAge) {
+  auto actuators = makeActuators(10.0, 20.0, 100.0);
+  EXPECT_TRUE(std::isnan(actuators.commandAge()));
+  ASSERT_EQ(actuators.command({"theta", "phi"}, {12.0, -3.0}, 0.0), "");
+  ASSERT_EQ(actuators.command({"theta"}, {-10.5}, 0.1), "");
+  ASSERT_EQ(actuators.command({"theta"}, {10.0}, 0.2), "");  // at the limit: not clamped
+  EXPECT_EQ(actuators.saturations()[0], 2u);
+  EXPECT_EQ(actuators.saturations()[1], 0u);
+  actuators.update(0.5);
+  EXPECT_NEAR(actuators.commandAge(), 0.3, kTol);
+}
+
 namespace {
 
 // Effort actuators (a torque motor "pendulum", a force motor "slider") beside a velocity one.

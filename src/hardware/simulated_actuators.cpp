@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_set>
@@ -80,6 +81,7 @@ SimulatedActuators::SimulatedActuators(std::vector<std::string> names,
   velocities_.assign(names_.size(), 0.0);
   positions_.assign(names_.size(), 0.0);
   efforts_.assign(names_.size(), 0.0);
+  saturations_.assign(names_.size(), 0);
   measured_velocities_.assign(names_.size(), 0.0);
   measured_positions_.assign(names_.size(), 0.0);
 }
@@ -119,6 +121,7 @@ std::string SimulatedActuators::command(const std::vector<std::string>& names,
     const double limit = limits_[i].kind == ActuatorKind::Effort ? limits_[i].max_effort
                                                                  : limits_[i].max_velocity;
     setpoints_[i] = std::clamp(setpoints[k], -limit, limit);
+    if (std::abs(setpoints[k]) > limit) ++saturations_[i];
     if (models_[i].dead_time > 0.0)
       pending_[i].push_back({now_ + models_[i].dead_time, setpoints_[i]});
     else
@@ -130,6 +133,10 @@ std::string SimulatedActuators::command(const std::vector<std::string>& names,
   has_command_ = true;
   timed_out_ = false;
   return {};
+}
+
+double SimulatedActuators::commandAge() const {
+  return has_command_ ? now_ - last_command_time_ : std::numeric_limits<double>::quiet_NaN();
 }
 
 void SimulatedActuators::update(double t) {

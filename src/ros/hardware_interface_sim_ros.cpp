@@ -284,6 +284,7 @@ void HardwareInterfaceSimRos::diagnose(diagnostic_updater::DiagnosticStatusWrapp
   const std::string& reason = command_input_.lastReason();
   status.add("last rejection", reason.empty() ? std::string("none") : reason);
   status.add("command timeout [s]", actuators_.commandTimeout());
+  status.add("command age [s]", actuators_.commandAge());
   for (std::size_t i = 0; i < actuators_.names().size(); ++i) {
     const std::string& name = actuators_.names()[i];
     if (actuators_.limits()[i].kind == hardware::ActuatorKind::Effort)
@@ -292,6 +293,7 @@ void HardwareInterfaceSimRos::diagnose(diagnostic_updater::DiagnosticStatusWrapp
     else
       status.addf(name + " set-point, velocity [rad/s]", "%.6g, %.6g", actuators_.setpoints()[i],
                   actuators_.velocities()[i]);
+    status.add(name + " saturated set-points", actuators_.saturations()[i]);
   }
 }
 

@@ -114,6 +114,10 @@ class SimulatedActuators {
   const std::vector<double>& setpoints() const { return setpoints_; }
   /// The set-points the actuators follow now: setpoints() delayed by the dead time [rad/s].
   const std::vector<double>& activeSetpoints() const { return active_setpoints_; }
+  /// How many accepted set-points of each actuator were clamped to its limit.
+  const std::vector<unsigned long>& saturations() const { return saturations_; }
+  /// Time [s] since the last accepted command, at the latest time seen; NaN before the first.
+  double commandAge() const;
   /// True from the watchdog deadline until the next accepted command.
   bool timedOut() const { return timed_out_; }
   bool eStopped() const { return e_stopped_; }
@@ -145,6 +149,7 @@ class SimulatedActuators {
   std::vector<double> velocities_;
   std::vector<double> positions_;
   std::vector<double> efforts_;
+  std::vector<unsigned long> saturations_;
   std::vector<double> measured_velocities_;
   std::vector<double> measured_positions_;
   std::mt19937 noise_engine_;
