@@ -1,0 +1,129 @@
+#include "spherical_robots/rotor/geometric_phase.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <boost/numeric/odeint.hpp>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "spherical_robots/core/validation.hpp"
+
+namespace spherical_robots::rotor {
+namespace {
+
+namespace odeint = boost::numeric::odeint;
+using State = std::array<double, 3>;  // u_a, v_a, ψ
+
+constexpr double kTolerance = 1e-12;
+constexpr double kInitialStep = 0.05;
+
+/// Eqs 28-30 along curve(θ) from θ0 to θ1 (the curve must be smooth on the interval).
+template <typename Curve>
+PlaneState integrateSmooth(double k, const Curve& curve, double theta0, double theta1,
+                           const PlaneState& start) {
+  State x{start.u_a, start.v_a, start.psi};
+  if (theta1 > theta0) {
+    const auto rhs = [&](const State& s, State& dxdt, double theta) {
+      const PlaneState rates = realizableCurveRates(k, curve(theta), s[2]);
+      dxdt = {rates.u_a, rates.v_a, rates.psi};
+    };
+    odeint::integrate_adaptive(
+        odeint::make_controlled(kTolerance, kTolerance, odeint::runge_kutta_fehlberg78<State>()),
+        rhs, x, theta0, theta1, std::min(kInitialStep, theta1 - theta0));
+  }
+  return {x[0], x[1], x[2]};
+}
+
+void requireStart(const PlaneState& start) {
+  requireFinite(start.u_a, "start u_a [R]");
+  requireFinite(start.v_a, "start v_a [R]");
+  requireFinite(start.psi, "start psi [rad]");
+}
+
+void requireInterval(double theta0, double theta1) {
+  requireFinite(theta0, "theta0 [rad]");
+  requireFinite(theta1, "theta1 [rad]");
+  if (theta0 < 0.0 || theta1 > 2.0 * M_PI || theta0 > theta1) {
+    std::ostringstream message;
+    message << "theta interval [" << theta0 << ", " << theta1
+            << "] must satisfy 0 <= theta0 <= theta1 <= 2 pi";
+    throw std::invalid_argument(message.str());
+  }
+}
+
+}  // namespace
+
+PlaneState integrateFigureEight(double k, const FigureEight& curve, double theta0, double theta1,
+                                const PlaneState& start) {
+  requireInterval(theta0, theta1);
+  requireStart(start);
+  // The tangent jumps at the pole between the leaves (θ = π): each leaf is integrated with its
+  // own parameterization so no stage of the step control evaluates the other leaf.
+  const auto first = [&curve](double theta) { return curve.onLeaf(false, theta); };
+  const auto second = [&curve](double theta) { return curve.onLeaf(true, theta); };
+  PlaneState state = start;
+  if (theta0 < M_PI) state = integrateSmooth(k, first, theta0, std::min(theta1, M_PI), state);
+  if (theta1 > M_PI) state = integrateSmooth(k, second, std::max(theta0, M_PI), theta1, state);
+  return state;
+}
+
+StepResult rotorStep(double k, const FigureEight& curve) {
+  StepResult result;
+  result.half = integrateFigureEight(k, curve, 0.0, M_PI, PlaneState{});
+  result.full = integrateFigureEight(k, curve, M_PI, 2.0 * M_PI, result.half);
+  return result;
+}
+
+PlaneState integrateSteps(double k, const FigureEight& curve, int steps) {
+  if (steps < 1) {
+    throw std::invalid_argument("number of steps n must be >= 1, got " + std::to_string(steps));
+  }
+  PlaneState state;
+  for (int i = 0; i < steps; ++i) state = integrateFigureEight(k, curve, 0.0, 2.0 * M_PI, state);
+  return state;
+}
+
+std::vector<Eigen::Vector2d> planeTrace(double k, const FigureEight& curve, double theta0,
+                                        double theta1, int samples) {
+  requireInterval(theta0, theta1);
+  if (samples < 2) {
+    throw std::invalid_argument("trace samples must be >= 2, got " + std::to_string(samples));
+  }
+  std::vector<Eigen::Vector2d> points;
+  points.reserve(samples);
+  PlaneState state = integrateFigureEight(k, curve, 0.0, theta0, PlaneState{});
+  double theta = theta0;
+  points.emplace_back(state.u_a, state.v_a);
+  for (int i = 1; i < samples; ++i) {
+    const double next =
+        i + 1 == samples ? theta1 : theta0 + (theta1 - theta0) * i / (samples - 1.0);
+    state = integrateFigureEight(k, curve, theta, next, state);
+    theta = next;
+    points.emplace_back(state.u_a, state.v_a);
+  }
+  return points;
+}
+
+LeafPhase leafPhase(double k, double r) {
+  sphericalCircle(r, 0.0, false);  // validates r
+  const auto circle = [r](double phi) { return sphericalCircle(r, phi, false); };
+  const PlaneState end = integrateSmooth(k, circle, 0.0, 2.0 * M_PI, PlaneState{});
+  return {Eigen::Vector2d(end.u_a, end.v_a), end.psi};
+}
+
+StepPhase composeLeaves(const LeafPhase& first, const LeafPhase& second) {
+  const Eigen::Vector2d mirrored(second.shift.x(), -second.shift.y());
+  StepPhase phase;
+  phase.shift = first.shift + Eigen::Rotation2Dd(-first.holonomy) * mirrored;
+  phase.h = phase.shift.norm();
+  phase.eta = first.holonomy - second.holonomy;
+  return phase;
+}
+
+StepPhase stepPhase(double k, double a, double b) {
+  return composeLeaves(leafPhase(k, a), leafPhase(k, b));
+}
+
+}  // namespace spherical_robots::rotor
