@@ -16,13 +16,12 @@ namespace {
 namespace odeint = boost::numeric::odeint;
 using State = std::array<double, 3>;  // u_a, v_a, ψ
 
-constexpr double kTolerance = 1e-12;
 constexpr double kInitialStep = 0.05;
 
 /// Eqs 28-30 along curve(θ) from θ0 to θ1 (the curve must be smooth on the interval).
 template <typename Curve>
 PlaneState integrateSmooth(double k, const Curve& curve, double theta0, double theta1,
-                           const PlaneState& start) {
+                           const PlaneState& start, double tolerance = kIntegrationTolerance) {
   State x{start.u_a, start.v_a, start.psi};
   if (theta1 > theta0) {
     const auto rhs = [&](const State& s, State& dxdt, double theta) {
@@ -30,7 +29,7 @@ PlaneState integrateSmooth(double k, const Curve& curve, double theta0, double t
       dxdt = {rates.u_a, rates.v_a, rates.psi};
     };
     odeint::integrate_adaptive(
-        odeint::make_controlled(kTolerance, kTolerance, odeint::runge_kutta_fehlberg78<State>()),
+        odeint::make_controlled(tolerance, tolerance, odeint::runge_kutta_fehlberg78<State>()),
         rhs, x, theta0, theta1, std::min(kInitialStep, theta1 - theta0));
   }
   return {x[0], x[1], x[2]};
@@ -106,10 +105,11 @@ std::vector<Eigen::Vector2d> planeTrace(double k, const FigureEight& curve, doub
   return points;
 }
 
-LeafPhase leafPhase(double k, double r) {
+LeafPhase leafPhase(double k, double r, double tolerance) {
   sphericalCircle(r, 0.0, false);  // validates r
+  requirePositive(tolerance, "integration tolerance");
   const auto circle = [r](double phi) { return sphericalCircle(r, phi, false); };
-  const PlaneState end = integrateSmooth(k, circle, 0.0, 2.0 * M_PI, PlaneState{});
+  const PlaneState end = integrateSmooth(k, circle, 0.0, 2.0 * M_PI, PlaneState{}, tolerance);
   return {Eigen::Vector2d(end.u_a, end.v_a), end.psi};
 }
 

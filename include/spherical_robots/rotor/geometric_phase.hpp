@@ -40,8 +40,12 @@ struct LeafPhase {
   Eigen::Vector2d shift = Eigen::Vector2d::Zero();
   double holonomy = 0.0;
 };
-/// @throw std::invalid_argument unless 0 < r < kMaxCircleRadius, or on a bad k.
-LeafPhase leafPhase(double k, double r);
+/// Absolute and relative tolerance of every integration unless a caller asks for less.
+constexpr double kIntegrationTolerance = 1e-12;
+
+/// tolerance: of the integration (the planner's leaf table uses a looser one for its start).
+/// @throw std::invalid_argument unless 0 < r < kMaxCircleRadius, tolerance > 0, or on a bad k.
+LeafPhase leafPhase(double k, double r, double tolerance = kIntegrationTolerance);
 
 /// One step's phase for γ = 0: shift vector, h = |shift| and η = ψ(2π).
 struct StepPhase {

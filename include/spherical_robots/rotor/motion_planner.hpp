@@ -42,7 +42,7 @@ struct PlanResult {
 
 /// Solves eqs 32-33 on a grid of leaf integrations, refines every root by Newton's method on
 /// integrated leaves, aims each with γ and verifies it by integrating all n steps.
-/// Solutions whose final_error exceeds 1e-8 are dropped (and counted in the reason if none remain).
+/// Solutions whose final_error exceeds 1e-6 are dropped (and counted in the reason if none remain).
 /// @throw std::invalid_argument on a non-finite input, k < 0, steps < 1, max_radius outside
 ///        (0, kMaxCircleRadius) or heading_turns < 0.
 PlanResult planRotorMotion(const PlanRequest& request);
