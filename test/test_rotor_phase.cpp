@@ -70,6 +70,16 @@ double publishedAlpha() {
   return rootOf([](double alpha) { return signedShift(0.0, std::sin(alpha)) + 1.0; }, 0.5, 0.56);
 }
 
+/// Plane points (u_a, v_a) of one step at 2 * half_samples + 1 equally spaced θ; the first
+/// half_samples + 1 are the half step.
+std::vector<Eigen::Vector2d> planePoints(double k, const FigureEight& curve, int half_samples) {
+  std::vector<Eigen::Vector2d> points;
+  for (const ContactCoordinates& c : samplePath(k, curve, 1, 2 * half_samples)) {
+    points.emplace_back(c.u_a, c.v_a);
+  }
+  return points;
+}
+
 /// Proper crossings between non-adjacent segments of a polyline.
 int selfIntersections(const std::vector<Eigen::Vector2d>& p) {
   const auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
@@ -170,7 +180,9 @@ TEST(RotorPhase, SelfIntersectionsOfTheHalfStep) {
   for (int i = 0; i < 5; ++i) {
     for (double t : {0.1, 0.5, 0.9}) {
       const double k = bounds[i] + t * (bounds[i + 1] - bounds[i]);
-      const int crossings = selfIntersections(planeTrace(k, FigureEight(a, a), 0.0, M_PI, 1500));
+      std::vector<Eigen::Vector2d> half = planePoints(k, FigureEight(a, a), 1500);
+      half.resize(1501);
+      const int crossings = selfIntersections(half);
       EXPECT_EQ(crossings, i) << "k = " << k;
     }
   }
@@ -206,11 +218,27 @@ TEST(RotorPhase, PlanePathIsAsLongAsTheContactCurve) {
   // Rolling without slip: the contact point moves equal distances on the sphere and the plane.
   for (double k : {0.0, 2.5, 5.0}) {
     const FigureEight curve(0.5, 0.35, 0.7);
-    const std::vector<Eigen::Vector2d> trace = planeTrace(k, curve, 0.0, 2 * M_PI, 4001);
+    const std::vector<Eigen::Vector2d> trace = planePoints(k, curve, 2000);
     double length = 0.0;
     for (std::size_t i = 1; i < trace.size(); ++i) length += (trace[i] - trace[i - 1]).norm();
     EXPECT_NEAR(length, curve.length(), 1e-4 * curve.length()) << "k = " << k;
   }
+}
+
+TEST(RotorPhase, SampledPathFollowsTheStepsAndTheCurve) {
+  const double k = 1.8;
+  const FigureEight curve(0.42, 0.27, -0.6);
+  const std::vector<ContactCoordinates> path = samplePath(k, curve, 3, 40);
+  ASSERT_EQ(path.size(), 121u);
+  const PlaneState end = integrateSteps(k, curve, 3);
+  EXPECT_NEAR(path.back().u_a, end.u_a, 1e-10);  // split at the samples, same tolerance
+  EXPECT_NEAR(path.back().v_a, end.v_a, 1e-10);
+  EXPECT_NEAR(path.back().psi, end.psi, 1e-10);
+  for (int i = 0; i <= 40; ++i) {
+    const Eigen::Vector3d c = contactPoint(path[40 + i].u_o, path[40 + i].v_o);
+    EXPECT_LE((c - curve.at(2 * M_PI * i / 40).point).norm(), 1e-12) << i;
+  }
+  EXPECT_THROW(samplePath(k, curve, 0, 10), std::invalid_argument);
 }
 
 TEST(RotorPhase, PlannedMotionIsRealizableAndRolls) {

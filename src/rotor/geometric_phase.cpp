@@ -84,25 +84,31 @@ PlaneState integrateSteps(double k, const FigureEight& curve, int steps) {
   return state;
 }
 
-std::vector<Eigen::Vector2d> planeTrace(double k, const FigureEight& curve, double theta0,
-                                        double theta1, int samples) {
-  requireInterval(theta0, theta1);
-  if (samples < 2) {
-    throw std::invalid_argument("trace samples must be >= 2, got " + std::to_string(samples));
+std::vector<ContactCoordinates> samplePath(double k, const FigureEight& curve, int steps,
+                                           int samples_per_step) {
+  if (steps < 1 || samples_per_step < 1) {
+    throw std::invalid_argument("steps and samples per step must be >= 1, got " +
+                                std::to_string(steps) + " and " +
+                                std::to_string(samples_per_step));
   }
-  std::vector<Eigen::Vector2d> points;
-  points.reserve(samples);
-  PlaneState state = integrateFigureEight(k, curve, 0.0, theta0, PlaneState{});
-  double theta = theta0;
-  points.emplace_back(state.u_a, state.v_a);
-  for (int i = 1; i < samples; ++i) {
-    const double next =
-        i + 1 == samples ? theta1 : theta0 + (theta1 - theta0) * i / (samples - 1.0);
-    state = integrateFigureEight(k, curve, theta, next, state);
-    theta = next;
-    points.emplace_back(state.u_a, state.v_a);
+  const auto coordinates = [&curve](const PlaneState& state, double theta) {
+    const Eigen::Vector2d angles = contactAngles(curve.at(theta).point);
+    return ContactCoordinates{state.u_a, state.v_a, angles.x(), angles.y(), state.psi};
+  };
+  std::vector<ContactCoordinates> path;
+  path.reserve(static_cast<std::size_t>(steps) * samples_per_step + 1);
+  PlaneState state;
+  path.push_back(coordinates(state, 0.0));
+  for (int step = 0; step < steps; ++step) {
+    double theta = 0.0;
+    for (int i = 1; i <= samples_per_step; ++i) {
+      const double next = i == samples_per_step ? 2.0 * M_PI : 2.0 * M_PI * i / samples_per_step;
+      state = integrateFigureEight(k, curve, theta, next, state);
+      theta = next;
+      path.push_back(coordinates(state, theta));
+    }
   }
-  return points;
+  return path;
 }
 
 LeafPhase leafPhase(double k, double r, double tolerance) {

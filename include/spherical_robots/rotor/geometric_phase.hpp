@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "spherical_robots/rotor/contact_curve.hpp"
+#include "spherical_robots/rotor/contact_kinematics.hpp"
 #include "spherical_robots/rotor/figure_eight.hpp"
 
 namespace spherical_robots::rotor {
@@ -29,10 +30,11 @@ StepResult rotorStep(double k, const FigureEight& curve);
 /// @throw std::invalid_argument as integrateFigureEight(), or if steps < 1.
 PlaneState integrateSteps(double k, const FigureEight& curve, int steps);
 
-/// Plane points (u_a, v_a) at `samples` >= 2 equally spaced θ from θ0 to θ1, from the zero
-/// state at θ = 0 (for plots and self-intersection counts).
-std::vector<Eigen::Vector2d> planeTrace(double k, const FigureEight& curve, double theta0,
-                                        double theta1, int samples);
+/// The contact coordinates along n >= 1 steps from the zero state, at samples_per_step >= 1
+/// equally spaced θ per step (θ = 0 first, the end of the last step last): for plots, paths and
+/// self-intersection counts. @throw std::invalid_argument as integrateSteps() or on bad counts.
+std::vector<ContactCoordinates> samplePath(double k, const FigureEight& curve, int steps,
+                                           int samples_per_step);
 
 /// One leaf (circle of Euclidean radius r, first-leaf orientation, γ = 0) from the zero state:
 /// its plane displacement and heading change.
