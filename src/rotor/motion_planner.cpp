@@ -357,10 +357,11 @@ std::vector<RotorPlan> planHeading(const PlanRequest& request, double psi, const
     }
   }
   if (plans.empty()) {
-    why << "no figure eight with radii a, b <= " << request.max_radius << " has eta = psi/n = "
-        << equations.eta << " and h = " << equations.h << " (k = " << request.k
+    why << "no figure eight with radii a, b <= " << request.max_radius
+        << " R has eta = psi/n = " << equations.eta << " and h = " << equations.h
+        << " R (k = " << request.k
         << "; over that range eta spans about [" << grid.eta_lo << ", " << grid.eta_hi
-        << "] and h reaches about " << grid.h_hi << ")";
+        << "] and h reaches about " << grid.h_hi << " R)";
     if (rejected > 0) why << "; " << rejected << " root(s) failed verification";
     reasons.push_back(why.str());
   }
