@@ -115,8 +115,9 @@ TEST(RotorPlanner, NStepsLieOnACircle) {
     expectReaches(request, plan, 1e-8);
     const StepPhase phase = stepPhase(request.k, plan.a, plan.b);
     const double eta = request.psi / request.steps;
-    EXPECT_NEAR(phase.eta, eta, 1e-10);
-    EXPECT_NEAR(phase.h, std::abs(std::sin(eta / 2) / std::sin(3 * eta / 2)) * 0.5, 1e-10);
+    // The planner stops at Newton steps below 1e-10 R.
+    EXPECT_NEAR(phase.eta, eta, 1e-9);
+    EXPECT_NEAR(phase.h, std::abs(std::sin(eta / 2) / std::sin(3 * eta / 2)) * 0.5, 1e-9);
     const FigureEight curve(plan.a, plan.b, plan.gamma);
     std::vector<Eigen::Vector2d> points{Eigen::Vector2d::Zero()};
     PlaneState state;

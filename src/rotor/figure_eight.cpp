@@ -1,6 +1,5 @@
 #include "spherical_robots/rotor/figure_eight.hpp"
 
-#include <Eigen/Geometry>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -25,19 +24,24 @@ void requireRadius(double r, std::string_view what) {
 
 }  // namespace
 
-CurvePoint sphericalCircle(double a, double phi, bool mirrored) {
-  requireRadius(a, "circle radius a [R]");
-  requireFinite(phi, "circle angle [rad]");
-  const double sin_alpha = a;  // eq 35 with R = 1: sin α = a, cos α = d
-  const double d = std::sqrt(1.0 - a * a);
-  const double cos_alpha = d;
+namespace {
+
+/// Eq 35 for a checked radius a with d = √(1 − a²) (= cos α; sin α = a).
+CurvePoint circlePoint(double a, double d, double phi, bool mirrored) {
   const double s = std::sin(phi), c = std::cos(phi);
   const double y_sign = mirrored ? -1.0 : 1.0;
   CurvePoint out;
-  out.point = {a * s, y_sign * (-a * cos_alpha * c + d * sin_alpha),
-               -a * sin_alpha * c - d * cos_alpha};
-  out.tangent = {a * c, y_sign * a * cos_alpha * s, a * sin_alpha * s};
+  out.point = {a * s, y_sign * (-a * d * c + d * a), -a * a * c - d * d};
+  out.tangent = {a * c, y_sign * a * d * s, a * a * s};
   return out;
+}
+
+}  // namespace
+
+CurvePoint sphericalCircle(double a, double phi, bool mirrored) {
+  requireRadius(a, "circle radius a [R]");
+  requireFinite(phi, "circle angle [rad]");
+  return circlePoint(a, std::sqrt(1.0 - a * a), phi, mirrored);
 }
 
 double arcRadius(double a) {
@@ -64,6 +68,10 @@ FigureEight::FigureEight(double a, double b, double gamma) : a_(a), b_(b), gamma
   requireRadius(a, "first circle radius a [R]");
   requireRadius(b, "second circle radius b [R]");
   requireFinite(gamma, "orientation gamma [rad]");
+  d_a_ = std::sqrt(1.0 - a * a);
+  d_b_ = std::sqrt(1.0 - b * b);
+  cos_gamma_ = std::cos(gamma);
+  sin_gamma_ = std::sin(gamma);
 }
 
 CurvePoint FigureEight::at(double theta) const { return onLeaf(theta > M_PI, theta); }
@@ -77,12 +85,13 @@ CurvePoint FigureEight::onLeaf(bool second, double theta) const {
             << (second ? 2 : 1) << ", got " << theta;
     throw std::invalid_argument(message.str());
   }
-  CurvePoint leaf = second ? sphericalCircle(b_, 2.0 * theta - 2.0 * M_PI, true)
-                           : sphericalCircle(a_, 2.0 * theta, false);
-  const Eigen::Matrix3d turn = Eigen::AngleAxisd(gamma_, Eigen::Vector3d::UnitZ()).matrix();
-  leaf.point = turn * leaf.point;  // eq 31
-  leaf.tangent = 2.0 * (turn * leaf.tangent);
-  return leaf;
+  const CurvePoint leaf = second ? circlePoint(b_, d_b_, 2.0 * theta - 2.0 * M_PI, true)
+                                 : circlePoint(a_, d_a_, 2.0 * theta, false);
+  const auto turn = [this](const Eigen::Vector3d& v) {  // R_z(γ) of eq 31
+    return Eigen::Vector3d(cos_gamma_ * v.x() - sin_gamma_ * v.y(),
+                           sin_gamma_ * v.x() + cos_gamma_ * v.y(), v.z());
+  };
+  return {turn(leaf.point), 2.0 * turn(leaf.tangent)};
 }
 
 double FigureEight::length() const { return 2.0 * M_PI * (a_ + b_); }

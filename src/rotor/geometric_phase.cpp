@@ -5,6 +5,7 @@
 #include <array>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
+#include <complex>
 #include <sstream>
 #include <stdexcept>
 
@@ -112,11 +113,17 @@ std::vector<ContactCoordinates> samplePath(double k, const FigureEight& curve, i
 }
 
 LeafPhase leafPhase(double k, double r, double tolerance) {
-  sphericalCircle(r, 0.0, false);  // validates r
   requirePositive(tolerance, "integration tolerance");
-  const auto circle = [r](double phi) { return sphericalCircle(r, phi, false); };
-  const PlaneState end = integrateSmooth(k, circle, 0.0, 2.0 * M_PI, PlaneState{}, tolerance);
-  return {Eigen::Vector2d(end.u_a, end.v_a), end.psi};
+  const FigureEight curve(r, r);  // validates r; its first leaf at θ is the circle at angle 2θ
+  const auto circle = [&curve](double theta) { return curve.onLeaf(false, theta); };
+  const PlaneState half = integrateSmooth(k, circle, 0.0, 0.5 * M_PI, PlaneState{}, tolerance);
+  // The second half circle is the first one mirrored in x and traced backwards: along it eq 30
+  // gives the same heading increments in reverse order, so ψ(2π − s) = η − ψ(s) with η = 2ψ(π),
+  // and eqs 28-29 then make its shift e^{−iη} conj(first half's shift) in u + iv.
+  const double eta = 2.0 * half.psi;
+  const std::complex<double> first(half.u_a, half.v_a);
+  const std::complex<double> shift = first + std::polar(1.0, -eta) * std::conj(first);
+  return {Eigen::Vector2d(shift.real(), shift.imag()), eta};
 }
 
 StepPhase composeLeaves(const LeafPhase& first, const LeafPhase& second) {

@@ -51,6 +51,10 @@ class FigureEight {
   double a_;
   double b_;
   double gamma_;
+  double d_a_;  // √(1 − a²), √(1 − b²): eq 35's d
+  double d_b_;
+  double cos_gamma_;
+  double sin_gamma_;
 };
 
 }  // namespace spherical_robots::rotor

@@ -37,7 +37,8 @@ std::vector<ContactCoordinates> samplePath(double k, const FigureEight& curve, i
                                            int samples_per_step);
 
 /// One leaf (circle of Euclidean radius r, first-leaf orientation, γ = 0) from the zero state:
-/// its plane displacement and heading change.
+/// its plane displacement and heading change. Integrates half the circle and uses its mirror
+/// symmetry for the other half.
 struct LeafPhase {
   Eigen::Vector2d shift = Eigen::Vector2d::Zero();
   double holonomy = 0.0;
