@@ -2,11 +2,12 @@
 #include <iostream>
 
 #include "roller_command.hpp"
+#include "rotor_command.hpp"
 #include "sphere_sim_cli.hpp"
 #include "terrain_command.hpp"
 
 int main(int argc, char** argv) {
   using namespace spherical_robots::sphere_sim;
-  return runSphereSim({terrainCommand(), rollerCommand()},
+  return runSphereSim({terrainCommand(), rollerCommand(), rotorStepCommand(), rotorPlanCommand()},
                       std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
 }

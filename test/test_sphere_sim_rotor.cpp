@@ -1,0 +1,235 @@
+// `sphere_sim rotor-step` and `sphere_sim rotor-plan`, run as the built executable: the JSON
+// against the paper's published solutions (Svinin et al., section IV: k = 2.5, h/R = 1, a1 and
+// a2 with their γ), and the command-line contract (exit statuses 0/2/3/4, output file only when
+// the run succeeds or has no solution, errors naming the parameter).
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Process {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string readFile(const fs::path& path) {
+  std::ifstream file(path);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+/// Every number written as `"key": number` in order of appearance.
+std::vector<double> numbersOf(const std::string& json, const std::string& key) {
+  const std::regex member("\"" + key + "\": (-?[0-9][0-9.eE+-]*)");
+  std::vector<double> values;
+  for (auto it = std::sregex_iterator(json.begin(), json.end(), member); it != std::sregex_iterator();
+       ++it) {
+    values.push_back(std::stod((*it)[1].str()));
+  }
+  return values;
+}
+
+class SphereSimRotorTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string pattern = (fs::temp_directory_path() / "sphere_sim_rotor.XXXXXX").string();
+    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+    dir_ = pattern;
+    out_ = dir_ / "out.json";
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  /// sphere_sim with args and --out out_.
+  Process run(std::vector<std::string> args) const {
+    args.insert(args.begin(), SPHERE_SIM_EXECUTABLE);
+    args.push_back("--out");
+    args.push_back(out_.string());
+    std::vector<char*> argv;
+    for (std::string& arg : args) argv.push_back(arg.data());
+    argv.push_back(nullptr);
+    const fs::path out_path = dir_ / "stdout.txt", err_path = dir_ / "stderr.txt";
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
+    posix_spawn_file_actions_addopen(&actions, 2, err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
+    pid_t pid = 0;
+    const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    Process process;
+    if (spawned != 0) {
+      ADD_FAILURE() << "cannot start " << argv[0];
+      return process;
+    }
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    process.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    process.out = readFile(out_path);
+    process.err = readFile(err_path);
+    return process;
+  }
+
+  std::string output() const { return readFile(out_); }
+
+  fs::path dir_;
+  fs::path out_;
+};
+
+TEST_F(SphereSimRotorTest, StepWithThePublishedFirstSolutionMovesAlongV) {
+  // k = 2.5, a = b = a1 = 0.300429, γ = 0.931883: h/R = 1 along +v_a (section IV).
+  const Process p =
+      run({"rotor-step", "--k", "2.5", "--a", "0.300429", "--b", "0.300429", "--gamma", "0.931883"});
+  ASSERT_EQ(p.status, 0) << p.err;
+  const std::string json = output();
+  const std::vector<double> u = numbersOf(json, "u"), v = numbersOf(json, "v"),
+                            psi = numbersOf(json, "psi");
+  ASSERT_EQ(u.size(), 2u) << json;
+  ASSERT_EQ(v.size(), 2u);
+  ASSERT_EQ(psi.size(), 2u);
+  EXPECT_NEAR(u[1], 0.0, 5e-6);
+  EXPECT_NEAR(v[1], 1.0, 5e-6);
+  EXPECT_NEAR(psi[1], 0.0, 1e-10);  // a = b: the leaves' turns cancel
+  EXPECT_NE(json.find("\"half\""), std::string::npos);
+  EXPECT_NE(json.find("\"full\""), std::string::npos);
+  EXPECT_NE(p.out.find("rotor-step"), std::string::npos);
+}
+
+TEST_F(SphereSimRotorTest, StepGammaDefaultsToZeroAndTurnsThePathRigidly) {
+  ASSERT_EQ(run({"rotor-step", "--k", "1.5", "--a", "0.4", "--b", "0.25"}).status, 0);
+  const std::string plain = output();
+  ASSERT_EQ(run({"rotor-step", "--k", "1.5", "--a", "0.4", "--b", "0.25", "--gamma", "0"}).status,
+            0);
+  EXPECT_EQ(output(), plain);
+  ASSERT_EQ(run({"rotor-step", "--k", "1.5", "--a", "0.4", "--b", "0.25", "--gamma", "-1"}).status,
+            0);
+  const std::string turned = output();
+  const std::vector<double> u0 = numbersOf(plain, "u"), v0 = numbersOf(plain, "v");
+  const std::vector<double> u1 = numbersOf(turned, "u"), v1 = numbersOf(turned, "v");
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_NEAR(u1[i], std::cos(-1.0) * u0[i] - std::sin(-1.0) * v0[i], 1e-10);
+    EXPECT_NEAR(v1[i], std::sin(-1.0) * u0[i] + std::cos(-1.0) * v0[i], 1e-10);
+  }
+  const std::vector<double> psi0 = numbersOf(plain, "psi"), psi1 = numbersOf(turned, "psi");
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_NEAR(psi1[i], psi0[i], 1e-10);
+}
+
+TEST_F(SphereSimRotorTest, PlanFindsThePublishedSolutionsShortestFirst) {
+  const Process p = run({"rotor-plan", "--k", "2.5", "--steps", "1", "--target", "0,1,0"});
+  ASSERT_EQ(p.status, 0) << p.err;
+  const std::string json = output();
+  const std::vector<double> a = numbersOf(json, "a"), b = numbersOf(json, "b"),
+                            gamma = numbersOf(json, "gamma"), length = numbersOf(json, "length"),
+                            error = numbersOf(json, "final_error");
+  ASSERT_GE(a.size(), 4u) << json;
+  ASSERT_EQ(b.size(), a.size());
+  ASSERT_EQ(gamma.size(), a.size());
+  ASSERT_EQ(error.size(), a.size());
+  for (std::size_t i = 1; i < length.size(); ++i) EXPECT_LE(length[i - 1], length[i]);
+  for (double e : error) EXPECT_LE(e, 1e-8);
+  EXPECT_NEAR(a[0], 0.300429, 5e-7);  // a1, the shortest
+  EXPECT_NEAR(b[0], 0.300429, 5e-7);
+  EXPECT_NEAR(gamma[0], 0.931883, 5e-7);
+  EXPECT_NEAR(length[0], 2 * M_PI * 2 * 0.300429, 1e-5);
+  bool a2 = false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (std::abs(a[i] - 0.491471) < 5e-7 && std::abs(b[i] - 0.491471) < 5e-7) {
+      a2 = true;
+      EXPECT_NEAR(gamma[i], -0.69726, 5e-6);
+    }
+  }
+  EXPECT_TRUE(a2) << json;
+  EXPECT_EQ(json.find("\"reason\""), std::string::npos);
+}
+
+TEST_F(SphereSimRotorTest, PlanWithoutSolutionExits3WithAReason) {
+  const Process p = run({"rotor-plan", "--k", "2.5", "--steps", "1", "--target", "100,0,0"});
+  EXPECT_EQ(p.status, 3) << p.err;
+  const std::string json = output();
+  EXPECT_NE(json.find("\"solutions\": []"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"reason\": \"no plan"), std::string::npos) << json;
+  // 7 rad of accumulated turn is not 7 − 2π: with radii <= 0.5 one step cannot turn 7 rad …
+  const Process turn = run({"rotor-plan", "--k", "2", "--steps", "1", "--target", "-0.3,0.2,7",
+                            "--max-radius", "0.5"});
+  EXPECT_EQ(turn.status, 3) << turn.err;
+  // … but can turn 7 − 2π.
+  const Process turns = run({"rotor-plan", "--k", "2", "--steps", "1", "--target", "-0.3,0.2,7",
+                             "--max-radius", "0.5", "--heading-turns", "1"});
+  EXPECT_EQ(turns.status, 0) << turns.err;
+  for (double psi : numbersOf(output(), "psi")) EXPECT_NEAR(psi, 7 - 2 * M_PI, 1e-12);
+}
+
+TEST_F(SphereSimRotorTest, BadInputExitStatuses) {
+  struct Case {
+    std::vector<std::string> args;
+    int status;
+    std::string needle;
+  };
+  const std::vector<Case> cases = {
+      {{"rotor-step", "--k", "1", "--a", "0.8", "--b", "0.3"}, 4, "0.8"},
+      {{"rotor-step", "--k", "nan", "--a", "0.3", "--b", "0.3"}, 4, "k"},
+      {{"rotor-step", "--k", "-1", "--a", "0.3", "--b", "0.3"}, 4, "k"},
+      {{"rotor-step", "--k", "1", "--a", "0.3"}, 2, "b"},
+      {{"rotor-plan", "--k", "1", "--steps", "1.5", "--target", "0,1,0"}, 2, "steps"},
+      {{"rotor-plan", "--k", "1", "--steps", "0", "--target", "0,1,0"}, 4, "steps"},
+      {{"rotor-plan", "--k", "1", "--steps", "1", "--target", "0,1"}, 2, "target"},
+      {{"rotor-plan", "--k", "1", "--steps", "1", "--target", "0,inf,0"}, 4, "target"},
+      {{"rotor-plan", "--k", "1", "--steps", "1", "--target", "0,1,0", "--max-radius", "0.72"},
+       4,
+       "max radius"},
+  };
+  for (const Case& c : cases) {
+    fs::remove(out_);
+    const Process p = run(c.args);
+    EXPECT_EQ(p.status, c.status) << c.args[0] << " " << c.args[2] << ": " << p.err;
+    EXPECT_NE(p.err.find(c.needle), std::string::npos) << p.err;
+    EXPECT_FALSE(fs::exists(out_)) << c.needle;
+  }
+}
+
+TEST_F(SphereSimRotorTest, HelpDescribesTheConventions) {
+  for (const char* command : {"rotor-step", "rotor-plan"}) {
+    std::vector<std::string> args = {command, "--help"};
+    args.insert(args.begin(), SPHERE_SIM_EXECUTABLE);
+    std::vector<char*> argv;
+    for (std::string& arg : args) argv.push_back(arg.data());
+    argv.push_back(nullptr);
+    const fs::path out_path = dir_ / "help.txt";
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
+    pid_t pid = 0;
+    ASSERT_EQ(posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ), 0);
+    posix_spawn_file_actions_destroy(&actions);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    EXPECT_EQ(WEXITSTATUS(status), 0);
+    const std::string help = readFile(out_path);
+    EXPECT_NE(help.find("Euclidean radius"), std::string::npos) << help;
+    EXPECT_NE(help.find("gamma"), std::string::npos);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
