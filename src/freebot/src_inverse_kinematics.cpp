@@ -7,6 +7,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "spherical_robots/core/validation.hpp"
 
@@ -127,6 +128,17 @@ IkResult solveIk(const SrcManipulator& manipulator, const Eigen::Vector3d& targe
     manipulator.requireValid(seed);
   }
 
+  // The residual DLS reduces, r = [e_p; δ] (eqs 45-47 without the gains, which are equal):
+  // ‖r‖² = ‖e_p‖² + sin²(θ/2), the merit of the line search.
+  const auto merit = [&](const LinkPose& end) {
+    const double position = (target_position - end.position).squaredNorm();
+    if (!full_pose) {
+      return position;
+    }
+    const double half_sine = std::sin(0.5 * angleBetween(end.orientation, target_orientation));
+    return position + half_sine * half_sine;
+  };
+
   std::mt19937 rng(options.seed);
   IkResult best;
   double best_score = std::numeric_limits<double>::infinity();
@@ -143,15 +155,14 @@ IkResult solveIk(const SrcManipulator& manipulator, const Eigen::Vector3d& targe
       joints.assign(manipulator.jointCount(), SrcJointState{});
     }
     ++best.starts;
-    double window_score = std::numeric_limits<double>::infinity();
-    int window_start = 0;
+    double window_merit = 0.0;
     for (int iteration = 0;; ++iteration) {
       LinkPose end;
       const Eigen::MatrixXd jacobian = manipulator.jacobian(joints, end);
       const Eigen::Vector3d position_error = target_position - end.position;
       const double position_norm = position_error.norm();
       const double angle = full_pose ? angleBetween(end.orientation, target_orientation) : 0.0;
-      // Errors in units of their tolerances, so that neither dominates the comparison.
+      // Errors in units of their tolerances, so that neither dominates the choice of the best.
       const double score = std::pow(position_norm / options.position_tolerance, 2) +
                            std::pow(angle / options.orientation_tolerance, 2);
       if (score < best_score) {
@@ -161,23 +172,21 @@ IkResult solveIk(const SrcManipulator& manipulator, const Eigen::Vector3d& targe
         best.position_error = position_norm;
         best.orientation_error = angle;
       }
-      const bool success = position_norm <= options.position_tolerance &&
-                           angle <= options.orientation_tolerance;
-      if (success) {
+      if (position_norm <= options.position_tolerance &&
+          angle <= options.orientation_tolerance) {
         best.success = true;
         return best;
       }
+      const double current_merit = merit(end);
       if (iteration >= options.max_iterations) {
         break;
       }
-      if (iteration - window_start >= options.stall_window) {
-        if (score > 0.99 * 0.99 * window_score) {  // the root score fell by less than 1 %
+      if (iteration % options.stall_window == 0) {
+        // Stuck: the residual fell by less than 0.01 % over the last window.
+        if (iteration > 0 && current_merit > (1.0 - 2e-4) * window_merit) {
           break;
         }
-        window_score = score;
-        window_start = iteration;
-      } else if (iteration == window_start) {
-        window_score = score;
+        window_merit = current_merit;
       }
       twist.head<3>() = options.position_gain * position_error;  // eq 45, fixed target
       if (full_pose) {
@@ -186,20 +195,34 @@ IkResult solveIk(const SrcManipulator& manipulator, const Eigen::Vector3d& targe
             end.orientation.dot(target_orientation) < 0.0
                 ? Eigen::Quaterniond(-target_orientation.coeffs())
                 : target_orientation;
-        twist.tail<3>() = options.orientation_gain * orientationError(end.orientation, desired);  // eq 46
+        twist.tail<3>() =
+            options.orientation_gain * orientationError(end.orientation, desired);  // eq 46
       }
-      const Eigen::VectorXd velocity =
-          dampedLeastSquares(jacobian.topRows(rows), twist, options.singular_region,
-                             options.max_damping);  // eq 42
-      // Near a singularity the DLS velocity can be huge; no joint rolls more than
-      // max_joint_step per iteration (the direction is kept).
+      const Eigen::VectorXd velocity = dampedLeastSquares(
+          jacobian.topRows(rows), twist, options.singular_region, options.max_damping);  // eq 42
+      // Near a singularity the DLS velocity can be huge: no joint rolls more than
+      // max_joint_step per iteration (the direction is kept) ...
       double largest = 0.0;
       for (Eigen::Index k = 0; k + 1 < velocity.size(); k += 2) {
         largest = std::max(largest, velocity.segment<2>(k).norm());
       }
-      const double dt = std::min(options.step, options.max_joint_step / std::max(largest, 1e-300));
-      joints = manipulator.roll(joints, velocity, dt);
+      double dt = std::min(options.step, options.max_joint_step / std::max(largest, 1e-300));
+      // ... and a step that does not reduce the residual is halved (at most kHalvings times):
+      // the DLS direction descends ‖r‖², so this converges where the plain step would
+      // oscillate (a target out of reach pulls the chain into the stretched singularity).
+      constexpr int kHalvings = 10;
+      bool moved = false;
+      for (int halving = 0; halving <= kHalvings && !moved; ++halving, dt *= 0.5) {
+        std::vector<SrcJointState> trial = manipulator.roll(joints, velocity, dt);
+        if (merit(manipulator.endEffector(trial)) < current_merit) {
+          joints = std::move(trial);
+          moved = true;
+        }
+      }
       ++best.iterations;
+      if (!moved) {
+        break;
+      }
     }
   }
   return best;
