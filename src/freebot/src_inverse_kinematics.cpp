@@ -182,7 +182,7 @@ IkResult solveIk(const SrcManipulator& manipulator, const Eigen::Vector3d& targe
         break;
       }
       if (iteration % options.stall_window == 0) {
-        // Stuck: the residual fell by less than 0.01 % over the last window.
+        // Stuck: the residual fell by less than 0.02 % over the last window.
         if (iteration > 0 && current_merit > (1.0 - 2e-4) * window_merit) {
           break;
         }

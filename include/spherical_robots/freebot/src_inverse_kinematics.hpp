@@ -7,10 +7,13 @@
 // each iteration rolls every joint for `step` seconds at the DLS joint velocity of
 // v^r = K_p e_p, ω^r = K_a δ (eqs 45, 46 with a fixed target). With K_p = K_a = 2 I and
 // step = 2/3 s the linearised errors shrink by |1 − 2·step| = 1/3 (position) and
-// |1 − step| = 1/3 (orientation, since δ ≈ half the rotation vector) per iteration. A start
-// ends on success (both errors within tolerance), after max_iterations, or when the weighted
-// error has not fallen by 1 % over stall_window iterations; then the solver restarts from a
-// seeded random configuration, up to `restarts` times, and keeps the best pose found.
+// |1 − step| = 1/3 (orientation, since δ ≈ half the rotation vector) per iteration. The step is
+// shortened so that no joint rolls more than max_joint_step, and halved (up to 10 times) until
+// the residual ‖e_p‖² + ‖δ‖² falls. A start ends on success (both errors within tolerance),
+// after max_iterations, when no halved step lowers the residual, or when the residual fell by
+// less than 0.02 % over stall_window iterations; the solver then restarts from a seeded random
+// configuration, up to `restarts` times, and returns the best pose found (errors weighted by
+// their tolerances).
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -37,7 +40,7 @@ struct IkOptions {
   double singular_region = 0.01;        ///< ξ of eq 44 (Table II)
   double max_damping = 0.001;           ///< λ_max of eq 44 (Table II prints 0.01; F11)
   int max_iterations = 100;             ///< per start
-  int stall_window = 10;                ///< iterations without a 1 % improvement end a start
+  int stall_window = 10;                ///< iterations without a 0.02 % improvement end a start
   int restarts = 30;                    ///< random restarts after the first start
   std::uint32_t seed = 1;               ///< of the restarts' random configurations
 };
