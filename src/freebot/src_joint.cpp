@@ -66,9 +66,9 @@ void requireUnit(const Eigen::Quaterniond& q, const char* what) {
   const double deviation = std::abs(q.norm() - 1.0);
   if (deviation > kUnitTolerance) {
     std::ostringstream message;
+    message << what << " must be a unit quaternion (||q| - 1| <= " << kUnitTolerance << "), got |q| = ";
     message.precision(17);
-    message << what << " must be a unit quaternion (| |q| - 1 | <= " << kUnitTolerance
-            << "), got |q| = " << q.norm();
+    message << q.norm();
     throw std::invalid_argument(message.str());
   }
 }
