@@ -36,6 +36,7 @@ void requireValidOptions(const IkOptions& options) {
   requirePositive(options.step, "IK step [s]");
   requireNonNegative(options.singular_region, "IK singular region xi");
   requireNonNegative(options.max_damping, "IK maximum damping lambda_max");
+  requireNonNegative(options.damping_residual, "IK damping residual");
   requireAtLeast(options.max_iterations, 1, "IK max_iterations");
   requireAtLeast(options.stall_window, 1, "IK stall_window");
   requireAtLeast(options.restarts, 0, "IK restarts");
@@ -198,8 +199,17 @@ IkResult solveIk(const SrcManipulator& manipulator, const Eigen::Vector3d& targe
         twist.tail<3>() =
             options.orientation_gain * orientationError(end.orientation, desired);  // eq 46
       }
-      const Eigen::VectorXd velocity = dampedLeastSquares(
-          jacobian.topRows(rows), twist, options.singular_region, options.max_damping);  // eq 42
+      // Eq 44's damping bounds the joint rates near a singular configuration, but it also stops
+      // the solver short of a target that lies near one (F11). It is applied in full while the
+      // residual ‖r‖ >= damping_residual and fades with ‖r‖ below, so the last steps are plain
+      // Gauss-Newton steps.
+      const double fade =
+          options.damping_residual > 0.0
+              ? std::min(1.0, std::sqrt(current_merit) / options.damping_residual)
+              : 1.0;
+      const Eigen::VectorXd velocity =
+          dampedLeastSquares(jacobian.topRows(rows), twist, options.singular_region,
+                             fade * options.max_damping);  // eq 42
       // Near a singularity the DLS velocity can be huge: no joint rolls more than
       // max_joint_step per iteration (the direction is kept) ...
       double largest = 0.0;

@@ -376,7 +376,7 @@ Subcommand freebotIkCommand() {
       {"position-tolerance", "M", "Success: position error <= M [m], > 0.", "1e-5", false, {}},
       {"orientation-tolerance", "RAD", "Success: orientation error <= RAD [rad], > 0.", "1e-4",
        false, {}},
-      {"restarts", "N", "Random restarts after the first start, integer >= 0.", "30", false, {}},
+      {"restarts", "N", "Random restarts after the first start, integer >= 0.", "60", false, {}},
       {"random-seed", "S", "Seed of the restarts' random configurations, integer >= 0.", "1",
        false, {}},
       outOption("JSON file to write (members below), also when the target is not reached."),

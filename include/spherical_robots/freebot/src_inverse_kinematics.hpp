@@ -9,8 +9,8 @@
 // step = 2/3 s the linearised errors shrink by |1 − 2·step| = 1/3 (position) and
 // |1 − step| = 1/3 (orientation, since δ ≈ half the rotation vector) per iteration. The step is
 // shortened so that no joint rolls more than max_joint_step, and halved (up to 10 times) until
-// the residual ‖e_p‖² + ‖δ‖² falls. A start ends on success (both errors within tolerance),
-// after max_iterations, when no halved step lowers the residual, or when the residual fell by
+// the residual ‖e_p‖² + ‖δ‖² falls; eq 44's damping fades as the residual vanishes. A start
+// ends on success (both errors within tolerance), after max_iterations, when no halved step lowers the residual, or when the residual fell by
 // less than 0.02 % over stall_window iterations; the solver then restarts from a seeded random
 // configuration, up to `restarts` times, and returns the best pose found (errors weighted by
 // their tolerances).
@@ -38,10 +38,13 @@ struct IkOptions {
   double step = 2.0 / 3.0;              ///< integration step of the joint velocity [s]
   double max_joint_step = 1.0;          ///< largest roll of one joint per iteration [rad]
   double singular_region = 0.01;        ///< ξ of eq 44 (Table II)
-  double max_damping = 0.001;           ///< λ_max of eq 44 (Table II prints 0.01; F11)
+  double max_damping = 0.01;            ///< λ_max of eq 44 (Table II)
+  /// λ_max is scaled by min(1, ‖r‖ / this) for the residual ‖r‖ = sqrt(‖e_p‖² + ‖δ‖²) [m, −]
+  /// (0: eq 44 as printed, which stalls next to singular targets; F11).
+  double damping_residual = 0.01;
   int max_iterations = 100;             ///< per start
   int stall_window = 10;                ///< iterations without a 0.02 % improvement end a start
-  int restarts = 30;                    ///< random restarts after the first start
+  int restarts = 60;                    ///< random restarts after the first start
   std::uint32_t seed = 1;               ///< of the restarts' random configurations
 };
 
@@ -70,7 +73,7 @@ Eigen::VectorXd dampedLeastSquares(const Eigen::MatrixXd& jacobian, const Eigen:
 /// Solves for the joints that put B_n at the target. `seed`: the first start (empty: aligned).
 /// @throw std::invalid_argument on a non-finite target, a non-unit target orientation (FullPose),
 /// a seed that does not fit the chain, or options out of range (tolerances, gains, step <= 0,
-/// max_iterations < 1, stall_window < 1, restarts < 0, ξ or λ_max < 0).
+/// max_iterations < 1, stall_window < 1, restarts < 0, ξ, λ_max or damping_residual < 0).
 IkResult solveIk(const SrcManipulator& manipulator, const Eigen::Vector3d& target_position,
                  const Eigen::Quaterniond& target_orientation,
                  const std::vector<SrcJointState>& seed, const IkOptions& options);
