@@ -96,8 +96,9 @@ void BM_FreebotIkSweep(benchmark::State& state) {
       const auto start = std::chrono::steady_clock::now();
       const IkResult result =
           solveIk(setup.chain, target.position, target.orientation, {}, setup.options);
-      micros[k] = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
-                      .count();
+      micros[k] =
+          std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
+              .count();
       successes += result.success ? 1 : 0;
       iterations += result.iterations;
       benchmark::DoNotOptimize(result);

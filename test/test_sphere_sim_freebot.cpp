@@ -36,7 +36,8 @@ std::string text17(double value) {
   return out.str();
 }
 
-std::string joinQuaternionPairs(const std::vector<std::pair<Eigen::Quaterniond, Eigen::Quaterniond>>& joints) {
+std::string joinQuaternionPairs(
+    const std::vector<std::pair<Eigen::Quaterniond, Eigen::Quaterniond>>& joints) {
   std::string list;
   for (const auto& [link, base] : joints) {
     if (!list.empty()) list += ";";
@@ -130,14 +131,14 @@ TEST_F(FreebotCliTest, ForwardKinematicsOfStraightRolls) {
   for (const auto& link : out.get_child("links")) {
     const double sum = kRadii[i] + kRadii[i + 1];
     const Eigen::Vector3d rotation(u[i].x(), u[i].y(), 0.0);
-    position += orientation * (sum * (angleAxis(kRadii[i + 1] / sum * rotation) *
-                                      Eigen::Vector3d::UnitZ()));
+    position += orientation *
+                (sum * (angleAxis(kRadii[i + 1] / sum * rotation) * Eigen::Vector3d::UnitZ()));
     orientation = orientation * angleAxis(rotation);
     EXPECT_LE((vector3(link.second.get_child("position")) - position).norm(), 1e-15);
     EXPECT_LE(quaternion(link.second.get_child("orientation")).angularDistance(orientation), 1e-13);
-    EXPECT_LE(quaternion(link.second.get_child("joint_quaternion")).angularDistance(
-                  angleAxis(rotation)),
-              1e-13);
+    EXPECT_LE(
+        quaternion(link.second.get_child("joint_quaternion")).angularDistance(angleAxis(rotation)),
+        1e-13);
     ++i;
   }
   EXPECT_EQ(i, 2);
@@ -154,18 +155,20 @@ TEST_F(FreebotCliTest, JointQuaternionsGiveTheFullStateAndTheJacobianIsTheirDeri
   for (int i = 0; i < 2; ++i) {
     const double sum = kRadii[i] + kRadii[i + 1];
     const Eigen::Vector3d rotation(u[i].x(), u[i].y(), 0.0);
-    joints.emplace_back(angleAxis(kRadii[i] / sum * rotation), angleAxis(-kRadii[i + 1] / sum * rotation));
+    joints.emplace_back(angleAxis(kRadii[i] / sum * rotation),
+                        angleAxis(-kRadii[i + 1] / sum * rotation));
   }
   ASSERT_EQ(run({"freebot-fk", "--radii", kRadiiText, "--joints", kJointsText}).status, 0);
   const ptree by_vectors = json();
-  const Process process =
-      run({"freebot-fk", "--radii", kRadiiText, "--joint-quaternions", joinQuaternionPairs(joints)});
+  const Process process = run(
+      {"freebot-fk", "--radii", kRadiiText, "--joint-quaternions", joinQuaternionPairs(joints)});
   ASSERT_EQ(process.status, 0) << process.err;
   const ptree by_quaternions = json();
   const Eigen::Vector3d end =
       vector3(by_quaternions.get_child("links").back().second.get_child("position"));
-  EXPECT_LE((vector3(by_vectors.get_child("links").back().second.get_child("position")) - end).norm(),
-            1e-15);
+  EXPECT_LE(
+      (vector3(by_vectors.get_child("links").back().second.get_child("position")) - end).norm(),
+      1e-15);
   // Each column: roll joint i by ±ε about P_i's axis and difference B_n's pose.
   const auto jacobian = rows(by_quaternions.get_child("jacobian"));
   const double eps = 1e-6;
@@ -203,7 +206,8 @@ TEST_F(FreebotCliTest, JointQuaternionsGiveTheFullStateAndTheJacobianIsTheirDeri
 TEST_F(FreebotCliTest, InverseKinematicsRoundTripsThroughForwardKinematics) {
   // A reachable target: B_3's pose for some joints (made by freebot-fk).
   const std::string radii = "0.034,0.03,0.04,0.025";
-  ASSERT_EQ(run({"freebot-fk", "--radii", radii, "--joints", "0.4,-0.7;-1.1,0.3;0.5,0.9"}).status, 0);
+  ASSERT_EQ(run({"freebot-fk", "--radii", radii, "--joints", "0.4,-0.7;-1.1,0.3;0.5,0.9"}).status,
+            0);
   const ptree fk = json();
   const ptree& last = fk.get_child("links").back().second;
   const Eigen::Vector3d position = vector3(last.get_child("position"));
@@ -240,7 +244,8 @@ TEST_F(FreebotCliTest, PositionOnlyAndOutOfReach) {
   Process process = run({"freebot-ik", "--radii", radii, "--target", "0.01,-0.02,0.19"});
   ASSERT_EQ(process.status, 0) << process.err;
   EXPECT_EQ(json().get<std::string>("mode"), "position-only");
-  EXPECT_LE((vector3(json().get_child("position")) - Eigen::Vector3d(0.01, -0.02, 0.19)).norm(), 1e-5);
+  EXPECT_LE((vector3(json().get_child("position")) - Eigen::Vector3d(0.01, -0.02, 0.19)).norm(),
+            1e-5);
   // Out of reach: exit 3, the file says so, and holds the closest pose (stretched chain).
   process = run({"freebot-ik", "--radii", radii, "--target", "0.1,0.2,0.1", "--restarts", "2"});
   EXPECT_EQ(process.status, 3) << process.err;
@@ -253,8 +258,8 @@ TEST_F(FreebotCliTest, PositionOnlyAndOutOfReach) {
 }
 
 TEST_F(FreebotCliTest, WheelSpeedsOfTableIIGeometry) {
-  const std::vector<std::string> geometry = {"freebot-wheels", "--wheel-radius", "0.005",
-                                             "--wheel-interval", "0.046", "--shell-radii",
+  const std::vector<std::string> geometry = {"freebot-wheels",   "--wheel-radius", "0.005",
+                                             "--wheel-interval", "0.046",          "--shell-radii",
                                              "0.032,0.034"};
   auto args = geometry;
   args.insert(args.end(), {"--trolley", "0.01,-0.5"});
@@ -268,8 +273,8 @@ TEST_F(FreebotCliTest, WheelSpeedsOfTableIIGeometry) {
   EXPECT_NEAR(out.get<double>("w_l"), mean - half_difference, 1e-12);
   EXPECT_NEAR(out.get<double>("u_f"), 0.01, 1e-17);
   args = geometry;
-  args.insert(args.end(), {"--wheels", text17(out.get<double>("w_r")) + "," +
-                                           text17(out.get<double>("w_l"))});
+  args.insert(args.end(),
+              {"--wheels", text17(out.get<double>("w_r")) + "," + text17(out.get<double>("w_l"))});
   ASSERT_EQ(run(args).status, 0);
   EXPECT_NEAR(json().get<double>("u_f"), 0.01, 1e-16);
   EXPECT_NEAR(json().get<double>("u_s"), -0.5, 1e-14);
@@ -283,8 +288,8 @@ TEST_F(FreebotCliTest, UsageErrorsExitTwo) {
   expectRejected({"freebot-fk", "--radii", kRadiiText, "--joints", kJointsText,
                   "--joint-quaternions", "1,0,0,0,1,0,0,0;1,0,0,0,1,0,0,0"},
                  2, "exactly one");
-  expectRejected({"freebot-fk", "--radii", kRadiiText, "--joint-quaternions", "1,0,0,0;1,0,0,0"},
-                 2, "--joint-quaternions");
+  expectRejected({"freebot-fk", "--radii", kRadiiText, "--joint-quaternions", "1,0,0,0;1,0,0,0"}, 2,
+                 "--joint-quaternions");
   expectRejected({"freebot-fk", "--radii", "0.034", "--joints", "0,0"}, 2, "--radii");
   expectRejected({"freebot-ik", "--radii", kRadiiText, "--target", "0,0,0.1,1,0"}, 2, "--target");
   expectRejected({"freebot-ik", "--radii", kRadiiText, "--target", "0,0,0.1", "--seed", "0,0"}, 2,
@@ -307,10 +312,11 @@ TEST_F(FreebotCliTest, InvalidInputExitsFourWithoutOutput) {
                  4, "joint 2 q_{i,1}");
   expectRejected({"freebot-ik", "--radii", kRadiiText, "--target", "0,0,0.1,1,0.001,0,0"}, 4,
                  "target orientation");
-  expectRejected({"freebot-ik", "--radii", kRadiiText, "--target", "0,0,0.1",
-                  "--position-tolerance", "0"},
-                 4, "position tolerance");
-  expectRejected({"freebot-ik", "--radii", "-0.034,0.03,0.04", "--target", "0,0,0.1"}, 4, "l_{i-1}");
+  expectRejected(
+      {"freebot-ik", "--radii", kRadiiText, "--target", "0,0,0.1", "--position-tolerance", "0"}, 4,
+      "position tolerance");
+  expectRejected({"freebot-ik", "--radii", "-0.034,0.03,0.04", "--target", "0,0,0.1"}, 4,
+                 "l_{i-1}");
   expectRejected({"freebot-wheels", "--wheel-radius", "0.005", "--wheel-interval", "0.064",
                   "--shell-radii", "0.032,0.034", "--trolley", "1,1"},
                  4, "wheel interval");

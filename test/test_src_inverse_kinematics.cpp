@@ -2,7 +2,7 @@
 // the damped least squares against Eigen's pseudo-inverse and the normal equations, eq 47
 // against the quaternion product, targets made by forward kinematics of random joints, targets
 // out of reach (the closest pose is on the reach sphere), and the paper's targets A, B, C and
-// published joint quaternions (Table II, eqs 66-67; docs/errata.md F12, F13).
+// published joint quaternions (Table II, eqs 66-67; docs/errata.md F7, F11, F12).
 
 #include <gtest/gtest.h>
 
@@ -97,8 +97,8 @@ TEST(OrientationErrorTest, IsEq47AndHalfTheRotationVector) {
     // δ is the vector part of q^d q̃.
     EXPECT_LE((orientationError(q, d) - (d * q.conjugate()).vec()).norm(), 1e-15);
     const Eigen::Vector3d small(1e-4, -2e-4, 0.5e-4);
-    const Eigen::Quaterniond near = Eigen::Quaterniond(Eigen::AngleAxisd(small.norm(),
-                                                                         small.normalized())) * q;
+    const Eigen::Quaterniond near =
+        Eigen::Quaterniond(Eigen::AngleAxisd(small.norm(), small.normalized())) * q;
     EXPECT_LE((orientationError(q, near) - 0.5 * small).norm(), 1e-11);
     EXPECT_NEAR(angleBetween(q, near), small.norm(), 1e-15);
   }
@@ -144,19 +144,19 @@ TEST_P(ReachableTest, ReachesTargetsMadeByForwardKinematics) {
   EXPECT_EQ(successes, trials);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Chains, ReachableTest,
-    ::testing::Values(std::make_tuple(3, true, IkMode::FullPose),
-                      std::make_tuple(3, false, IkMode::FullPose),
-                      std::make_tuple(4, true, IkMode::FullPose),
-                      std::make_tuple(6, false, IkMode::FullPose),
-                      std::make_tuple(2, true, IkMode::PositionOnly),
-                      std::make_tuple(3, false, IkMode::PositionOnly)));
+INSTANTIATE_TEST_SUITE_P(Chains, ReachableTest,
+                         ::testing::Values(std::make_tuple(3, true, IkMode::FullPose),
+                                           std::make_tuple(3, false, IkMode::FullPose),
+                                           std::make_tuple(4, true, IkMode::FullPose),
+                                           std::make_tuple(6, false, IkMode::FullPose),
+                                           std::make_tuple(2, true, IkMode::PositionOnly),
+                                           std::make_tuple(3, false, IkMode::PositionOnly)));
 
 TEST(IkTest, IsDeterministic) {
   const SrcManipulator chain({kRadius, kRadius, kRadius, kRadius});
   const Eigen::Vector3d target(0.0036, 0.1636, 0.0924);  // Table II target A
-  const Eigen::Quaterniond orientation = Eigen::Quaterniond(0.8610, 0.4687, 0.1356, 0.1437).normalized();
+  const Eigen::Quaterniond orientation =
+      Eigen::Quaterniond(0.8610, 0.4687, 0.1356, 0.1437).normalized();
   const IkResult first = solveIk(chain, target, orientation, {}, IkOptions{});
   const IkResult second = solveIk(chain, target, orientation, {}, IkOptions{});
   ASSERT_EQ(first.joints.size(), second.joints.size());
@@ -208,10 +208,12 @@ TEST(PaperTargetsTest, ThreeJointsReachThePositionsOfAAndBButNotTheirPoses) {
   for (const PaperTarget& target : {kA, kB}) {
     IkOptions options;
     options.mode = IkMode::PositionOnly;
-    EXPECT_TRUE(solveIk(chain, target.position, target.orientation.normalized(), {}, options).success);
+    EXPECT_TRUE(
+        solveIk(chain, target.position, target.orientation.normalized(), {}, options).success);
     options.mode = IkMode::FullPose;
     options.restarts = 100;
-    const IkResult pose = solveIk(chain, target.position, target.orientation.normalized(), {}, options);
+    const IkResult pose =
+        solveIk(chain, target.position, target.orientation.normalized(), {}, options);
     EXPECT_FALSE(pose.success);
     // Not a near miss: the closest pose found is millimetres or degrees away.
     EXPECT_GT(pose.position_error + 0.034 * pose.orientation_error, 5e-3);
@@ -240,11 +242,12 @@ TEST(PaperTargetsTest, CIsOutOfReachOfThreeJoints) {
 
 TEST(PaperTargetsTest, PublishedJointQuaternionsAreNotRollingStates) {
   // Eqs 66, 67. Equal spheres roll as mirror images: every joint quaternion they can reach turns
-  // about an axis in B_{i-1}'s xy plane, so ε_z = 0 (test_src_joint, EqualSpheresRollAsMirrorImages).
-  // Five of the six published ones have |ε_z| > 0.02 (0.0367 … 0.7636).
+  // about an axis in B_{i-1}'s xy plane, so ε_z = 0 (test_src_joint,
+  // EqualSpheresRollAsMirrorImages). Five of the six published ones have |ε_z| > 0.02 (0.0367 …
+  // 0.7636).
   const std::vector<Eigen::Quaterniond> published = {
-      {0.7992, 0.1912, -0.5698, 0.0016},  {-0.5579, -0.1939, -0.7714, -0.2366},
-      {0.1270, -0.4998, -0.3887, 0.7636}, {-0.4558, 0.5135, -0.7261, -0.0367},
+      {0.7992, 0.1912, -0.5698, 0.0016},   {-0.5579, -0.1939, -0.7714, -0.2366},
+      {0.1270, -0.4998, -0.3887, 0.7636},  {-0.4558, 0.5135, -0.7261, -0.0367},
       {-0.0130, -0.6933, 0.0267, -0.7200}, {0.0880, 0.2577, 0.8231, -0.4983}};
   int off_plane = 0;
   for (const Eigen::Quaterniond& q : published) {
@@ -276,7 +279,8 @@ TEST(IkTest, RejectsBadInput) {
                std::invalid_argument);
   IkOptions position_only;
   position_only.mode = IkMode::PositionOnly;  // the orientation is not used, so not checked
-  EXPECT_NO_THROW(solveIk(chain, {0.05, 0, 0.05}, Eigen::Quaterniond(2, 0, 0, 0), {}, position_only));
+  EXPECT_NO_THROW(
+      solveIk(chain, {0.05, 0, 0.05}, Eigen::Quaterniond(2, 0, 0, 0), {}, position_only));
   EXPECT_THROW(solveIk(chain, {0.1, 0, 0}, unit, std::vector<SrcJointState>(3), IkOptions{}),
                std::invalid_argument);
   IkOptions bad;

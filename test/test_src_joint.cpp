@@ -205,8 +205,7 @@ TEST(SrcJointTest, QuaternionRateIsEq2) {
         ((angleAxis(h * omega) * q).coeffs() - (angleAxis(-h * omega) * q).coeffs()) / (2 * h);
     EXPECT_LE((quaternionRate(q, omega).coeffs() - difference).norm(), 1e-8);
   }
-  EXPECT_THROW(quaternionRate(Eigen::Quaterniond::Identity(), {kNaN, 0, 0}),
-               std::invalid_argument);
+  EXPECT_THROW(quaternionRate(Eigen::Quaterniond::Identity(), {kNaN, 0, 0}), std::invalid_argument);
 }
 
 TEST(SrcJointTest, RotationVectorsRoundTrip) {
@@ -284,10 +283,9 @@ TEST(SrcJointTest, FreeModesAreTheRollingVelocity) {
       const SrcJointState plus = rolled(eps);
       const SrcJointState minus = rolled(-eps);
       const Eigen::Vector3d v = (joint.position(plus) - joint.position(minus)) / (2 * eps);
-      const Eigen::Vector3d w =
-          rotationVector(SrcJoint::jointQuaternion(plus) *
-                         SrcJoint::jointQuaternion(minus).conjugate()) /
-          (2 * eps);
+      const Eigen::Vector3d w = rotationVector(SrcJoint::jointQuaternion(plus) *
+                                               SrcJoint::jointQuaternion(minus).conjugate()) /
+                                (2 * eps);
       EXPECT_LE((phi.col(axis).head<3>() - w).norm(), 1e-8) << "axis " << axis;
       EXPECT_LE((phi.col(axis).tail<3>() - v).norm(), 1e-9) << "axis " << axis;
     }

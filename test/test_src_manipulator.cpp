@@ -57,8 +57,8 @@ SrcJointState randomState(const SrcJoint& joint, std::mt19937& rng) {
 
 TEST(SrcManipulatorTest, AlignedChainIsAStackOfSpheres) {
   const SrcManipulator chain({0.05, 0.03, 0.04, 0.02});
-  const std::vector<LinkPose> poses = chain.forwardKinematics(
-      std::vector<SrcJointState>(3, SrcJointState{}));
+  const std::vector<LinkPose> poses =
+      chain.forwardKinematics(std::vector<SrcJointState>(3, SrcJointState{}));
   const double heights[] = {0.08, 0.15, 0.21};
   for (int i = 0; i < 3; ++i) {
     EXPECT_LE((poses[i].position - Eigen::Vector3d(0, 0, heights[i])).norm(), 1e-15);
@@ -85,8 +85,8 @@ TEST(SrcManipulatorTest, ForwardKinematicsOfStraightRollsInClosedForm) {
     for (int i = 0; i < 4; ++i) {
       const double sum = radii[i] + radii[i + 1];
       const Eigen::Vector3d rotation(u[i].x(), u[i].y(), 0.0);
-      position += orientation * (sum * (angleAxis(radii[i + 1] / sum * rotation) *
-                                        Eigen::Vector3d::UnitZ()));
+      position += orientation *
+                  (sum * (angleAxis(radii[i + 1] / sum * rotation) * Eigen::Vector3d::UnitZ()));
       orientation = orientation * angleAxis(rotation);
       EXPECT_LE((poses[i].position - position).norm(), 1e-15) << "link " << i + 1;
       EXPECT_LE(poses[i].orientation.angularDistance(orientation), 1e-13) << "link " << i + 1;
@@ -178,8 +178,7 @@ TEST(SrcManipulatorTest, RejectsBadInput) {
     chain.forwardKinematics(states);
     ADD_FAILURE() << "no exception";
   } catch (const std::invalid_argument& error) {
-    EXPECT_NE(std::string(error.what()).find("joint 2 q_{i,1}"), std::string::npos)
-        << error.what();
+    EXPECT_NE(std::string(error.what()).find("joint 2 q_{i,1}"), std::string::npos) << error.what();
   }
   EXPECT_THROW(chain.straightRolls({Eigen::Vector2d::Zero()}), std::invalid_argument);
 }

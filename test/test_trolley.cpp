@@ -118,8 +118,7 @@ TEST(TrolleyControlTest, ContactPointRunsAlongTheHeadingAtTheForwardSpeed) {
     const Eigen::Vector3d contact0 = 0.04 * joint.position(state).normalized();
     const Eigen::Vector3d contact1 = 0.04 * joint.position(next).normalized();
     const Eigen::Vector3d in_plane = state.base * (contact1 - contact0) / dt;  // into P_i
-    EXPECT_LE((in_plane - u_f * Eigen::Vector3d(std::cos(phi), std::sin(phi), 0.0)).norm(),
-              1e-8);
+    EXPECT_LE((in_plane - u_f * Eigen::Vector3d(std::cos(phi), std::sin(phi), 0.0)).norm(), 1e-8);
     const auto on_link = [&](const SrcJointState& s) {
       return Eigen::Vector3d(SrcJoint::jointQuaternion(s).conjugate() *
                              (-0.03 * joint.position(s).normalized()));
@@ -155,8 +154,8 @@ TEST(TrolleyControlTest, SteerThenMoveReachesTheTargetContact) {
       EXPECT_LE(base * (reached - wanted).norm(), 1e-6);
       if (base == link) {
         // Equal spheres: the contact point fixes the whole joint state.
-        EXPECT_LE(SrcJoint::jointQuaternion(drive.state).angularDistance(
-                      SrcJoint::jointQuaternion(target)),
+        EXPECT_LE(SrcJoint::jointQuaternion(drive.state)
+                      .angularDistance(SrcJoint::jointQuaternion(target)),
                   1e-4);
       }
     }

@@ -81,8 +81,8 @@ Eigen::VectorXd dampedLeastSquares(const Eigen::MatrixXd& jacobian, const Eigen:
   // maximum sizes keep the solver off the heap; it is the IK's inner loop.
   using Gram = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
   const bool wide = jacobian.rows() <= jacobian.cols();
-  const Gram gram = wide ? Gram(jacobian * jacobian.transpose())
-                         : Gram(jacobian.transpose() * jacobian);
+  const Gram gram =
+      wide ? Gram(jacobian * jacobian.transpose()) : Gram(jacobian.transpose() * jacobian);
   const Eigen::SelfAdjointEigenSolver<Gram> eigen(gram);
   const Eigen::Index count = gram.rows();  // min(m, 2n) singular values
   // Eigenvalues come in increasing order: σ_k² = eigenvalue(count − 1 − k), σ_1 first.
@@ -97,13 +97,13 @@ Eigen::VectorXd dampedLeastSquares(const Eigen::MatrixXd& jacobian, const Eigen:
   double damping2 = 0.0;  // eq 44
   if (rank > 0 && sigma(count - 1) < singular_region) {
     const double ratio = sigma(rank - 1) / singular_region;
-    // Eq 44 as printed turns negative when J is rank deficient and σ_r > ξ (F8): no damping then.
+    // Eq 44 as printed turns negative when J is rank deficient and σ_r > ξ (F6): no damping then.
     damping2 = std::max(0.0, (1.0 - ratio * ratio) * max_damping * max_damping);
   }
   // Eqs 42, 43: ω = Σ_k v_k σ_k / (σ_k² + λ²) u_k^T x, with J^T u_k = σ_k v_k (wide) or
   // u_k^T x = v_k^T J^T x / σ_k (tall).
-  const Eigen::VectorXd projected = wide ? Eigen::VectorXd(twist)
-                                         : Eigen::VectorXd(jacobian.transpose() * twist);
+  const Eigen::VectorXd projected =
+      wide ? Eigen::VectorXd(twist) : Eigen::VectorXd(jacobian.transpose() * twist);
   Eigen::VectorXd weights = Eigen::VectorXd::Zero(count);
   for (Eigen::Index k = 0; k < rank; ++k) {
     const Eigen::Index column = count - 1 - k;
@@ -173,8 +173,7 @@ IkResult solveIk(const SrcManipulator& manipulator, const Eigen::Vector3d& targe
         best.position_error = position_norm;
         best.orientation_error = angle;
       }
-      if (position_norm <= options.position_tolerance &&
-          angle <= options.orientation_tolerance) {
+      if (position_norm <= options.position_tolerance && angle <= options.orientation_tolerance) {
         best.success = true;
         return best;
       }
@@ -192,21 +191,19 @@ IkResult solveIk(const SrcManipulator& manipulator, const Eigen::Vector3d& targe
       twist.head<3>() = options.position_gain * position_error;  // eq 45, fixed target
       if (full_pose) {
         // q^d and −q^d are one orientation; the one nearer q makes δ the short way round.
-        const Eigen::Quaterniond desired =
-            end.orientation.dot(target_orientation) < 0.0
-                ? Eigen::Quaterniond(-target_orientation.coeffs())
-                : target_orientation;
+        const Eigen::Quaterniond desired = end.orientation.dot(target_orientation) < 0.0
+                                               ? Eigen::Quaterniond(-target_orientation.coeffs())
+                                               : target_orientation;
         twist.tail<3>() =
             options.orientation_gain * orientationError(end.orientation, desired);  // eq 46
       }
       // Eq 44's damping bounds the joint rates near a singular configuration, but it also stops
-      // the solver short of a target that lies near one (F11). It is applied in full while the
+      // the solver short of a target that lies near one (F7). It is applied in full while the
       // residual ‖r‖ >= damping_residual and fades with ‖r‖ below, so the last steps are plain
       // Gauss-Newton steps.
-      const double fade =
-          options.damping_residual > 0.0
-              ? std::min(1.0, std::sqrt(current_merit) / options.damping_residual)
-              : 1.0;
+      const double fade = options.damping_residual > 0.0
+                              ? std::min(1.0, std::sqrt(current_merit) / options.damping_residual)
+                              : 1.0;
       const Eigen::VectorXd velocity =
           dampedLeastSquares(jacobian.topRows(rows), twist, options.singular_region,
                              fade * options.max_damping);  // eq 42

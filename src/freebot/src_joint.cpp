@@ -66,7 +66,8 @@ void requireUnit(const Eigen::Quaterniond& q, const char* what) {
   const double deviation = std::abs(q.norm() - 1.0);
   if (deviation > kUnitTolerance) {
     std::ostringstream message;
-    message << what << " must be a unit quaternion (||q| - 1| <= " << kUnitTolerance << "), got |q| = ";
+    message << what << " must be a unit quaternion (||q| - 1| <= " << kUnitTolerance
+            << "), got |q| = ";
     message.precision(17);
     message << q.norm();
     throw std::invalid_argument(message.str());
@@ -117,8 +118,9 @@ Eigen::Vector3d SrcJoint::position(const SrcJointState& state) const {
 FreeModes SrcJoint::freeModes(const SrcJointState& state) const {
   const Eigen::Matrix3d plane = state.base.conjugate().toRotationMatrix();  // [f1 f2 f3], eq 10
   FreeModes phi;
-  phi.topRows<3>() = plane.leftCols<2>();                                   // eq 11
-  phi.bottomRows<3>() = -link_radius_ * skew(plane.col(2)) * plane.leftCols<2>();  // eq 15 (F3)
+  phi.topRows<3>() = plane.leftCols<2>();  // eq 11
+  phi.bottomRows<3>() =
+      -link_radius_ * skew(plane.col(2)) * plane.leftCols<2>();  // eqs 15, 16 (F2, F3)
   return phi;
 }
 

@@ -16,8 +16,9 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
 
 SrcManipulator::SrcManipulator(const std::vector<double>& radii) : radii_(radii) {
   if (radii_.size() < 2) {
-    throw std::invalid_argument("an SRC manipulator needs at least 2 radii (base l_0 and l_1), got " +
-                                std::to_string(radii_.size()));
+    throw std::invalid_argument(
+        "an SRC manipulator needs at least 2 radii (base l_0 and l_1), got " +
+        std::to_string(radii_.size()));
   }
   for (std::size_t i = 1; i < radii_.size(); ++i) {
     joints_.emplace_back(radii_[i - 1], radii_[i]);
@@ -60,8 +61,9 @@ std::vector<LinkPose> SrcManipulator::forwardKinematics(
   for (std::size_t i = 0; i < joints.size(); ++i) {
     LinkPose pose;
     pose.joint = SrcJoint::jointQuaternion(joints[i]);
-    pose.position = previous.position + previous.orientation * joints_[i].position(joints[i]);  // eq 26
-    pose.orientation = (previous.orientation * pose.joint).normalized();  // eq 17
+    pose.position =
+        previous.position + previous.orientation * joints_[i].position(joints[i]);  // eq 26
+    pose.orientation = (previous.orientation * pose.joint).normalized();            // eq 17
     poses.push_back(pose);
     previous = pose;
   }
@@ -89,9 +91,9 @@ Eigen::MatrixXd SrcManipulator::jacobian(const std::vector<SrcJointState>& joint
   const std::size_t n = joints.size();
   Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(6, 2 * static_cast<Eigen::Index>(n));
   // Angular part, eq 25: column pair i is ^I R_{B_{i-1}} Φ_{iω}. Linear part, eqs 31, 32:
-  // ^I R_{B_{i-1}} Φ_{iv} − Σ_{j > i} d_j^× ^I R_{B_{i-1}} Φ_{iω}, with d_j = ^I r_{B_j} − ^I r_{B_{j-1}}:
-  // joint i turns all of B_i … B_n rigidly, so its angular column moves B_n's centre by
-  // ω × (r_n − r_i). Accumulated in one forward pass as −d_j^× J_{B_{j-1}ω}.
+  // ^I R_{B_{i-1}} Φ_{iv} − Σ_{j > i} d_j^× ^I R_{B_{i-1}} Φ_{iω}, with d_j = ^I r_{B_j} − ^I
+  // r_{B_{j-1}}: joint i turns all of B_i … B_n rigidly, so its angular column moves B_n's centre
+  // by ω × (r_n − r_i). Accumulated in one forward pass as −d_j^× J_{B_{j-1}ω}.
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < n; ++i) {

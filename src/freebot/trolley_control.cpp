@@ -16,7 +16,7 @@ double effectiveRadius(const SrcJoint& joint) {
 Eigen::Vector2d jointVelocityOf(const SrcJoint& joint, double forward_speed, double direction) {
   requireFinite(forward_speed, "trolley forward speed u_f [m/s]");
   requireFinite(direction, "trolley direction phi [rad]");
-  // Eq 51 (with l'_i, F9): u_f cos φ = l' ω_y, u_f sin φ = −l' ω_x.
+  // Eq 51 (with l'_i, F8): u_f cos φ = l' ω_y, u_f sin φ = −l' ω_x.
   const double scale = forward_speed / effectiveRadius(joint);
   return {-scale * std::sin(direction), scale * std::cos(direction)};
 }
@@ -26,7 +26,7 @@ TrolleyReference trolleyReference(const SrcJoint& joint, const Eigen::Vector2d& 
   requireFinite(joint_velocity.y(), "joint velocity omega_y [rad/s]");
   TrolleyReference reference;
   reference.forward_speed = effectiveRadius(joint) * joint_velocity.norm();  // eq 52
-  // Eq 52's atan2 with two arguments (F9): the quadrant of (−ω_x, ω_y).
+  // Eq 52's atan2 with two arguments (F8): the quadrant of (−ω_x, ω_y).
   reference.direction =
       joint_velocity.isZero(0.0) ? 0.0 : std::atan2(-joint_velocity.x(), joint_velocity.y());
   return reference;
@@ -37,13 +37,13 @@ ArcPlan planArc(const SrcJoint& joint, const SrcJointState& current, const SrcJo
   SrcJoint::requireValid(target, "target joint state");
   const double l = joint.baseRadius();
   const Eigen::Vector3d up(0.0, 0.0, l);
-  const Eigen::Vector3d target_contact = target.base.conjugate() * up;    // eq 53
+  const Eigen::Vector3d target_contact = target.base.conjugate() * up;  // eq 53
   const Eigen::Vector3d current_contact = current.base.conjugate() * up;
   const Eigen::Vector3d offset = current.base * (target_contact - current_contact);  // eq 54
   ArcPlan plan;
   const double cosine = std::clamp((l - std::abs(offset.z())) / l, -1.0, 1.0);
   plan.distance = l * std::acos(cosine);  // eq 55
-  // Eq 55's heading, measured from P_i's x axis as eq 48 measures φ (F10).
+  // Eq 55's heading, measured from P_i's x axis as eq 48 measures φ (F9).
   plan.direction = std::atan2(offset.y(), offset.x());
   return plan;
 }

@@ -39,8 +39,8 @@ TrolleySpeeds TrolleyDrive::trolleySpeeds(const WheelSpeeds& wheels) const {
   requireFinite(wheels.left, "left wheel speed w_l [rad/s]");
   TrolleySpeeds trolley;
   // Eq 64; r_out r_w / sqrt(4 r_in² − l_w²) = r_out r_w / (2 r').
-  trolley.forward = outer_radius_ * wheel_radius_ / (2.0 * contact_radius_) *
-                    (wheels.right + wheels.left);
+  trolley.forward =
+      outer_radius_ * wheel_radius_ / (2.0 * contact_radius_) * (wheels.right + wheels.left);
   trolley.steering = wheel_radius_ / wheel_interval_ * (wheels.right - wheels.left);
   return trolley;
 }

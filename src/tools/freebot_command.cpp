@@ -61,8 +61,8 @@ std::vector<SrcJointState> quaternionJoints(const SrcManipulator& chain,
                                             const std::vector<std::vector<double>>& groups) {
   std::vector<SrcJointState> joints;
   for (const std::vector<double>& g : groups) {
-    joints.push_back({Eigen::Quaterniond(g[0], g[1], g[2], g[3]),
-                      Eigen::Quaterniond(g[4], g[5], g[6], g[7])});
+    joints.push_back(
+        {Eigen::Quaterniond(g[0], g[1], g[2], g[3]), Eigen::Quaterniond(g[4], g[5], g[6], g[7])});
   }
   chain.requireValid(joints);
   return joints;
@@ -189,11 +189,12 @@ int runIk(const ParsedOptions& options, std::ostream& out) {
   const std::vector<double> target = options.numberList("target");
   if (target.size() != 3 && target.size() != 7) {
     throw UsageError("--target: '" + options.text("target") + "' has " +
-                     std::to_string(target.size()) + " numbers, expected 3 (X,Y,Z) or 7 (X,Y,Z,QW,QX,QY,QZ)");
+                     std::to_string(target.size()) +
+                     " numbers, expected 3 (X,Y,Z) or 7 (X,Y,Z,QW,QX,QY,QZ)");
   }
   IkOptions ik;
-  ik.mode = options.flag("position-only") || target.size() == 3 ? IkMode::PositionOnly
-                                                                   : IkMode::FullPose;
+  ik.mode =
+      options.flag("position-only") || target.size() == 3 ? IkMode::PositionOnly : IkMode::FullPose;
   ik.position_tolerance = options.number("position-tolerance");
   ik.orientation_tolerance = options.number("orientation-tolerance");
   ik.restarts = integerOption(options, "restarts");
@@ -202,9 +203,9 @@ int runIk(const ParsedOptions& options, std::ostream& out) {
     throw InvalidInput("--random-seed must be >= 0, got " + options.text("random-seed"));
   }
   ik.seed = static_cast<std::uint32_t>(random_seed);
-  const std::vector<std::vector<double>> seed_groups =
-      options.given("seed") ? jointGroups(options, "seed", 2, count)
-                            : std::vector<std::vector<double>>{};
+  const std::vector<std::vector<double>> seed_groups = options.given("seed")
+                                                           ? jointGroups(options, "seed", 2, count)
+                                                           : std::vector<std::vector<double>>{};
 
   const SrcManipulator chain(radii);
   const std::vector<SrcJointState> seed =
@@ -279,8 +280,7 @@ int runWheels(const ParsedOptions& options, std::ostream& out) {
   const double wheel_radius = options.number("wheel-radius");
   const double wheel_interval = options.number("wheel-interval");
   const std::vector<double> shell = options.numberList("shell-radii", 2);
-  const std::vector<double> speeds =
-      options.numberList(trolley_given ? "trolley" : "wheels", 2);
+  const std::vector<double> speeds = options.numberList(trolley_given ? "trolley" : "wheels", 2);
   const freebot::TrolleyDrive drive(wheel_radius, wheel_interval, shell[0], shell[1]);
   freebot::TrolleySpeeds trolley;
   freebot::WheelSpeeds wheels;
@@ -327,9 +327,12 @@ non-finite, R_IN > R_OUT, L_W >= 2 R_IN: the shell cannot hold the wheels).
 )";
 
 OptionSpec radiiOption() {
-  return {"radii", "L0,L1,...,Ln",
+  return {"radii",
+          "L0,L1,...,Ln",
           "Sphere radii [m], > 0: the fixed base B_0's, then one per link B_1 ... B_n (n >= 1).",
-          "", true, {}};
+          "",
+          true,
+          {}};
 }
 
 }  // namespace
@@ -342,14 +345,20 @@ Subcommand freebotFkCommand() {
   command.description = kFkDescription;
   command.options = {
       radiiOption(),
-      {"joints", "U1X,U1Y;U2X,U2Y;...",
+      {"joints",
+       "U1X,U1Y;U2X,U2Y;...",
        "Each joint's rotation vector [rad] along its tangent-plane axes, ';' between joints.\n"
        "Not with --joint-quaternions.",
-       "", false, {}},
-      {"joint-quaternions", "W,X,Y,Z,W,X,Y,Z;...",
+       "",
+       false,
+       {}},
+      {"joint-quaternions",
+       "W,X,Y,Z,W,X,Y,Z;...",
        "Each joint's full state: q_{i,1} then q_{i-1,2} (scalar first), ';' between joints.\n"
        "Not with --joints.",
-       "", false, {}},
+       "",
+       false,
+       {}},
       outOption("JSON file to write (members below)."),
   };
   command.run = runFk;
@@ -363,22 +372,40 @@ Subcommand freebotIkCommand() {
   command.description = kIkDescription;
   command.options = {
       radiiOption(),
-      {"target", "X,Y,Z[,QW,QX,QY,QZ]",
+      {"target",
+       "X,Y,Z[,QW,QX,QY,QZ]",
        "Target centre of B_n [m] and, for a full pose, its orientation (unit quaternion, scalar\n"
        "first). Three numbers: position only.",
-       "", true, {}},
-      {"position-only", "", "Reach the position only; the orientation, if given, is ignored.", "",
-       false, {}},
-      {"seed", "U1X,U1Y;U2X,U2Y;...",
+       "",
+       true,
+       {}},
+      {"position-only",
+       "",
+       "Reach the position only; the orientation, if given, is ignored.",
+       "",
+       false,
+       {}},
+      {"seed",
+       "U1X,U1Y;U2X,U2Y;...",
        "First start: each joint's rotation vector [rad] (as freebot-fk --joints); default the\n"
        "aligned start.",
-       "", false, {}},
+       "",
+       false,
+       {}},
       {"position-tolerance", "M", "Success: position error <= M [m], > 0.", "1e-5", false, {}},
-      {"orientation-tolerance", "RAD", "Success: orientation error <= RAD [rad], > 0.", "1e-4",
-       false, {}},
+      {"orientation-tolerance",
+       "RAD",
+       "Success: orientation error <= RAD [rad], > 0.",
+       "1e-4",
+       false,
+       {}},
       {"restarts", "N", "Random restarts after the first start, integer >= 0.", "60", false, {}},
-      {"random-seed", "S", "Seed of the restarts' random configurations, integer >= 0.", "1",
-       false, {}},
+      {"random-seed",
+       "S",
+       "Seed of the restarts' random configurations, integer >= 0.",
+       "1",
+       false,
+       {}},
       outOption("JSON file to write (members below), also when the target is not reached."),
   };
   command.run = runIk;
@@ -393,13 +420,23 @@ Subcommand freebotWheelsCommand() {
   command.options = {
       {"wheel-radius", "R_W", "Wheel radius [m], > 0.", "", true, {}},
       {"wheel-interval", "L_W", "Distance between the wheels [m], > 0 and < 2 R_IN.", "", true, {}},
-      {"shell-radii", "R_IN,R_OUT", "Inner and outer shell radii [m], 0 < R_IN <= R_OUT.", "",
-       true, {}},
-      {"trolley", "U_F,U_S",
-       "Trolley forward [m/s] and steering [rad/s] speeds -> wheel speeds. Not with --wheels.", "",
-       false, {}},
-      {"wheels", "W_R,W_L",
-       "Right and left wheel speeds [rad/s] -> trolley speeds. Not with --trolley.", "", false,
+      {"shell-radii",
+       "R_IN,R_OUT",
+       "Inner and outer shell radii [m], 0 < R_IN <= R_OUT.",
+       "",
+       true,
+       {}},
+      {"trolley",
+       "U_F,U_S",
+       "Trolley forward [m/s] and steering [rad/s] speeds -> wheel speeds. Not with --wheels.",
+       "",
+       false,
+       {}},
+      {"wheels",
+       "W_R,W_L",
+       "Right and left wheel speeds [rad/s] -> trolley speeds. Not with --trolley.",
+       "",
+       false,
        {}},
       outOption("JSON file to write (members below)."),
   };

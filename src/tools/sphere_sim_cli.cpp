@@ -156,9 +156,9 @@ std::vector<std::vector<double>> ParsedOptions::numberGroups(const std::string& 
       start = comma + 1;
     }
     if (count != 0 && numbers.size() != count) {
-      throw UsageError("--" + name + ": group " + std::to_string(groups.size() + 1) + " '" +
-                       group + "' has " + std::to_string(numbers.size()) +
-                       " numbers, expected " + std::to_string(count));
+      throw UsageError("--" + name + ": group " + std::to_string(groups.size() + 1) + " '" + group +
+                       "' has " + std::to_string(numbers.size()) + " numbers, expected " +
+                       std::to_string(count));
     }
     groups.push_back(std::move(numbers));
     if (semicolon == std::string::npos) break;

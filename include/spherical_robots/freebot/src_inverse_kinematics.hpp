@@ -10,10 +10,10 @@
 // |1 − step| = 1/3 (orientation, since δ ≈ half the rotation vector) per iteration. The step is
 // shortened so that no joint rolls more than max_joint_step, and halved (up to 10 times) until
 // the residual ‖e_p‖² + ‖δ‖² falls; eq 44's damping fades as the residual vanishes. A start
-// ends on success (both errors within tolerance), after max_iterations, when no halved step lowers the residual, or when the residual fell by
-// less than 0.02 % over stall_window iterations; the solver then restarts from a seeded random
-// configuration, up to `restarts` times, and returns the best pose found (errors weighted by
-// their tolerances).
+// ends on success (both errors within tolerance), after max_iterations, when no halved step lowers
+// the residual, or when the residual fell by less than 0.02 % over stall_window iterations; the
+// solver then restarts from a seeded random configuration, up to `restarts` times, and returns the
+// best pose found (errors weighted by their tolerances).
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -40,18 +40,18 @@ struct IkOptions {
   double singular_region = 0.01;        ///< ξ of eq 44 (Table II)
   double max_damping = 0.01;            ///< λ_max of eq 44 (Table II)
   /// λ_max is scaled by min(1, ‖r‖ / this) for the residual ‖r‖ = sqrt(‖e_p‖² + ‖δ‖²) [m, −]
-  /// (0: eq 44 as printed, which stalls next to singular targets; F11).
+  /// (0: eq 44 as printed, which stalls next to singular targets; F7).
   double damping_residual = 0.01;
-  int max_iterations = 100;             ///< per start
-  int stall_window = 10;                ///< iterations without a 0.02 % improvement end a start
-  int restarts = 60;                    ///< random restarts after the first start
-  std::uint32_t seed = 1;               ///< of the restarts' random configurations
+  int max_iterations = 100;  ///< per start
+  int stall_window = 10;     ///< iterations without a 0.02 % improvement end a start
+  int restarts = 60;         ///< random restarts after the first start
+  std::uint32_t seed = 1;    ///< of the restarts' random configurations
 };
 
 struct IkResult {
   bool success = false;
-  double position_error = 0.0;     ///< ‖r^d − r‖ [m] of the returned joints
-  double orientation_error = 0.0;  ///< angle between q^d and q_{n,I} [rad]; 0 in PositionOnly
+  double position_error = 0.0;        ///< ‖r^d − r‖ [m] of the returned joints
+  double orientation_error = 0.0;     ///< angle between q^d and q_{n,I} [rad]; 0 in PositionOnly
   std::vector<SrcJointState> joints;  ///< the best configuration found (closest when unsuccessful)
   LinkPose end;                       ///< B_n's pose for `joints`
   int iterations = 0;                 ///< over all starts

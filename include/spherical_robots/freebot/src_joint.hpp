@@ -85,7 +85,7 @@ class SrcJoint {
   /// (l_i + l_{i-1}) f3(q_{i-1,2}).
   Eigen::Vector3d position(const SrcJointState& state) const;
 
-  /// Eq 16, corrected (F3): Φ_i = [f1 f2; −l_i f3^× f1  −l_i f3^× f2], the spatial velocity
+  /// Eq 16, corrected (F2, F3): Φ_i = [f1 f2; −l_i f3^× f1  −l_i f3^× f2], the spatial velocity
   /// [ω; v] of B_i relative to B_{i-1}, in Σ B_{i-1}, per unit joint velocity.
   FreeModes freeModes(const SrcJointState& state) const;
 

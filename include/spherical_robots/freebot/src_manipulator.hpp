@@ -35,7 +35,8 @@ class SrcManipulator {
 
   /// Every joint rolled straight from the aligned start by its rotation vector [rad].
   /// @throw std::invalid_argument on a count that is not jointCount() or a non-finite value.
-  std::vector<SrcJointState> straightRolls(const std::vector<Eigen::Vector2d>& rotation_vectors) const;
+  std::vector<SrcJointState> straightRolls(
+      const std::vector<Eigen::Vector2d>& rotation_vectors) const;
 
   /// Eqs 17, 26: the pose of every link B_1 … B_n.
   /// @throw std::invalid_argument on a count that is not jointCount() or a non-unit quaternion.

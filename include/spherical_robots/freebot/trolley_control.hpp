@@ -29,15 +29,16 @@ struct ArcPlan {
 
 /// Gains of eqs 56, 57, 63 (Table II: k_s = 3, k_φ1 = 6, k_φ2 = 1).
 struct TrolleyGains {
-  double forward = 3.0;     ///< k_s [1/s]
-  double steering = 6.0;    ///< k_φ1 [1/s]
-  double alignment = 1.0;   ///< k_φ2 [1/m]
+  double forward = 3.0;    ///< k_s [1/s]
+  double steering = 6.0;   ///< k_φ1 [1/s]
+  double alignment = 1.0;  ///< k_φ2 [1/m]
 };
 
 /// l' = l_i l_{i-1} / (l_i + l_{i-1}) [m] of eq 51.
 double effectiveRadius(const SrcJoint& joint);
 
-/// Eqs 50, 51: the joint velocity [rad/s] produced by the trolley moving at u_f [m/s] along φ [rad].
+/// Eqs 50, 51: the joint velocity [rad/s] produced by the trolley moving at u_f [m/s] along φ
+/// [rad].
 /// @throw std::invalid_argument on a non-finite input.
 Eigen::Vector2d jointVelocityOf(const SrcJoint& joint, double forward_speed, double direction);
 
@@ -67,8 +68,8 @@ double forwardSpeed(double reference_distance, double reference_rate, double dis
 
 /// Result of driveToContact().
 struct ArcDrive {
-  SrcJointState state;  ///< the joint state at the end
-  double heading = 0.0; ///< the trolley's final φ [rad]
+  SrcJointState state;    ///< the joint state at the end
+  double heading = 0.0;   ///< the trolley's final φ [rad]
   double distance = 0.0;  ///< arc run s [m]
   double time = 0.0;      ///< [s]
 };
