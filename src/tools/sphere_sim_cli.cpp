@@ -139,6 +139,34 @@ std::vector<double> ParsedOptions::numberList(const std::string& name, std::size
   return numbers;
 }
 
+std::vector<std::vector<double>> ParsedOptions::numberGroups(const std::string& name,
+                                                             std::size_t count) const {
+  const std::string& list = text(name);
+  std::vector<std::vector<double>> groups;
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t semicolon = list.find(';', begin);
+    const std::string group = list.substr(begin, semicolon - begin);
+    std::vector<double> numbers;
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t comma = group.find(',', start);
+      numbers.push_back(parseNumber(name, group.substr(start, comma - start)));
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+    if (count != 0 && numbers.size() != count) {
+      throw UsageError("--" + name + ": group " + std::to_string(groups.size() + 1) + " '" + group +
+                       "' has " + std::to_string(numbers.size()) + " numbers, expected " +
+                       std::to_string(count));
+    }
+    groups.push_back(std::move(numbers));
+    if (semicolon == std::string::npos) break;
+    begin = semicolon + 1;
+  }
+  return groups;
+}
+
 ParsedOptions parseOptions(const Subcommand& command, const std::vector<std::string>& args) {
   std::map<std::string, std::string> values;
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -389,10 +417,19 @@ JsonWriter& JsonWriter::number(std::string_view key, double value) {
 }
 
 JsonWriter& JsonWriter::numbers(std::string_view key, const std::vector<double>& values) {
+  return numberArray(key, values);
+}
+
+JsonWriter& JsonWriter::numbers(const std::vector<double>& values) {
+  return numberArray(std::nullopt, values);
+}
+
+JsonWriter& JsonWriter::numberArray(std::optional<std::string_view> key,
+                                    const std::vector<double>& values) {
   for (const double value : values) {
     if (!std::isfinite(value)) {
-      throw std::runtime_error("JSON member " + std::string(key) + " would hold " +
-                               formatNumber(value));
+      throw std::runtime_error("JSON member " + std::string(key.value_or("(array element)")) +
+                               " would hold " + formatNumber(value));
     }
   }
   beginElement(key);

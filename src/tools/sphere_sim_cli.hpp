@@ -72,6 +72,10 @@ class ParsedOptions {
   /// A comma-separated list of finite doubles; count 0 accepts any length >= 1.
   /// @throw UsageError on a malformed element or a wrong count, InvalidInput on a non-finite one.
   std::vector<double> numberList(const std::string& name, std::size_t count = 0) const;
+  /// A ';'-separated list of such lists (joint lists: "0.1,-0.2;0.3,0"), each of count numbers
+  /// (0: any length >= 1). @throw as numberList(), naming the group.
+  std::vector<std::vector<double>> numberGroups(const std::string& name,
+                                                std::size_t count = 0) const;
 
  private:
   std::string command_;
@@ -168,6 +172,8 @@ class JsonWriter {
   JsonWriter& number(std::string_view key, double value);
   /// A member holding an array of numbers, e.g. "omega": [0.5, -1, 0]. @throw as number().
   JsonWriter& numbers(std::string_view key, const std::vector<double>& values);
+  /// An array of numbers as the next element of the current array (rows of a matrix).
+  JsonWriter& numbers(const std::vector<double>& values);
   JsonWriter& text(std::string_view key, std::string_view value);
   JsonWriter& boolean(std::string_view key, bool value);
   /// Opens an object or array member of the current object; end() closes it.
@@ -188,6 +194,7 @@ class JsonWriter {
   /// Starts a new element: comma, newline, indentation, and "key": in an object.
   void beginElement(std::optional<std::string_view> key);
   void open(std::optional<std::string_view> key, char bracket);
+  JsonWriter& numberArray(std::optional<std::string_view> key, const std::vector<double>& values);
   void writeQuoted(std::string_view text);
 
   std::ostream& out_;

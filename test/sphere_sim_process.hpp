@@ -1,0 +1,62 @@
+#pragma once
+// Runs the built sphere_sim executable in a directory and captures its exit status, stdout and
+// stderr (for the CLI gtests).
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sphere_sim_test {
+
+struct Process {
+  int status = -1;  ///< exit status, -1 if the process did not exit normally or did not start
+  std::string out;
+  std::string err;
+};
+
+inline std::string readFile(const std::filesystem::path& path) {
+  std::ifstream file(path);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+/// `executable args...` run in `dir`, stdout and stderr captured through files in `dir`
+/// (stdout.txt, stderr.txt).
+inline Process runIn(const std::string& executable, const std::vector<std::string>& args,
+                     const std::filesystem::path& dir) {
+  std::vector<std::string> argv_text = {executable};
+  argv_text.insert(argv_text.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& arg : argv_text) argv.push_back(arg.data());
+  argv.push_back(nullptr);
+  const std::filesystem::path out_path = dir / "stdout.txt";
+  const std::filesystem::path err_path = dir / "stderr.txt";
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addchdir_np(&actions, dir.c_str());
+  posix_spawn_file_actions_addopen(&actions, 1, out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
+  posix_spawn_file_actions_addopen(&actions, 2, err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  Process process;
+  if (spawned != 0) return process;
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  process.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  process.out = readFile(out_path);
+  process.err = readFile(err_path);
+  return process;
+}
+
+}  // namespace sphere_sim_test
