@@ -241,9 +241,10 @@ const char* const kIkDescription =
 joints that put B_n's centre at X,Y,Z [m] and, unless --position-only or only three numbers are
 given, its orientation at QW,QX,QY,QZ (inertial frame, Hamilton, scalar first, unit within 1e-9;
 ignored in position-only mode). The solver is the adaptive damped least squares of eqs 38-47
-(K_p = K_a = 2 I, xi = 0.01, lambda_max = 0.001) integrated by rolling the joints, step 2/3 s,
-each joint at most 1 rad per iteration, halved until the residual falls; a start ends after 100
-iterations or when stuck, then it restarts from a seeded random configuration
+(K_p = K_a = 2 I, xi = lambda_max = 0.01 as Table II, the damping fading once the residual is
+below 0.01) integrated by rolling the joints, step 2/3 s, each joint at most 1 rad per
+iteration, halved until the residual falls; a start ends after 100 iterations or when stuck,
+then it restarts from a seeded random configuration, --restarts times at most
 (docs/conventions.md, "FreeBOT IK"). Deterministic for given inputs.
 
 JSON members (numbers with 17 significant digits; SI units, radians unless _deg):
