@@ -28,10 +28,11 @@ inline std::string readFile(const std::filesystem::path& path) {
   return text.str();
 }
 
-/// `executable args...` run in `dir`, stdout and stderr captured through files in `dir`
-/// (stdout.txt, stderr.txt).
+/// `executable args...` run in `work_dir` (default: `dir`), stdout and stderr captured through
+/// files in `dir` (stdout.txt, stderr.txt).
 inline Process runIn(const std::string& executable, const std::vector<std::string>& args,
-                     const std::filesystem::path& dir) {
+                     const std::filesystem::path& dir, std::filesystem::path work_dir = {}) {
+  if (work_dir.empty()) work_dir = dir;
   std::vector<std::string> argv_text = {executable};
   argv_text.insert(argv_text.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -41,7 +42,7 @@ inline Process runIn(const std::string& executable, const std::vector<std::strin
   const std::filesystem::path err_path = dir / "stderr.txt";
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addchdir_np(&actions, dir.c_str());
+  posix_spawn_file_actions_addchdir_np(&actions, work_dir.c_str());
   posix_spawn_file_actions_addopen(&actions, 1, out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
                                    0644);
   posix_spawn_file_actions_addopen(&actions, 2, err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,

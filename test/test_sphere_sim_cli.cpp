@@ -4,11 +4,7 @@
 // subcommand's JSON is checked against the published numbers of Kimura et al. 2019.
 // The option parser and JSON writer shared by all subcommands are also tested in-process.
 
-#include <fcntl.h>
 #include <gtest/gtest.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -25,6 +21,7 @@
 #include <vector>
 
 #include "sphere_sim_cli.hpp"
+#include "sphere_sim_process.hpp"
 
 namespace {
 
@@ -61,18 +58,8 @@ bool mentionsWord(const std::string& text, const std::string& word) {
   return false;
 }
 
-struct Process {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string readFile(const fs::path& path) {
-  std::ifstream file(path);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
+using sphere_sim_test::Process;
+using sphere_sim_test::readFile;
 
 /// A table read back from the CSV: every cell must be a complete, finite number.
 struct Csv {
@@ -134,35 +121,8 @@ class SphereSimTest : public ::testing::Test {
 
   /// Runs sphere_sim with args in directory cwd (default: the test's directory).
   Process run(const std::vector<std::string>& args, const fs::path& cwd = {}) const {
-    std::vector<std::string> argv_text = {SPHERE_SIM_EXECUTABLE};
-    argv_text.insert(argv_text.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (std::string& arg : argv_text) argv.push_back(arg.data());
-    argv.push_back(nullptr);
-
-    const fs::path out_path = dir_ / "stdout.txt";
-    const fs::path err_path = dir_ / "stderr.txt";
-    const std::string work_dir = (cwd.empty() ? dir_ : cwd).string();
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addchdir_np(&actions, work_dir.c_str());
-    posix_spawn_file_actions_addopen(&actions, 1, out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                     0644);
-    posix_spawn_file_actions_addopen(&actions, 2, err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                     0644);
-    pid_t pid = 0;
-    const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    Process process;
-    if (spawned != 0) {
-      ADD_FAILURE() << "cannot start " << argv[0];
-      return process;
-    }
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    process.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    process.out = readFile(out_path);
-    process.err = readFile(err_path);
+    const Process process = sphere_sim_test::runIn(SPHERE_SIM_EXECUTABLE, args, dir_, cwd);
+    if (process.status == -1) ADD_FAILURE() << "cannot start or finish " << SPHERE_SIM_EXECUTABLE;
     return process;
   }
 

@@ -56,22 +56,14 @@ NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.setHardwareID("Norma");
   updater_.add("norma plant", this, &NormaPlantRos::diagnose);
 
-  const bool publish_clock = boolParam(pnh, "publish_clock", false);
-  const double speedup = publish_clock ? numberParam(pnh, "speedup", 1.0) : 0.0;
   const auto& p = dynamics_.parameters();
   ROS_INFO_STREAM("Norma: R = " << p.R << " m, L = " << p.L << " m, L0 = " << p.L0
                                 << " m, delta0 = " << p.delta0 << " m, masses shell "
                                 << p.m_shell << ", shaft " << p.m_shaft << ", pendulum "
                                 << p.m_pendulum << ", slider " << p.m_slider << " kg; step "
                                 << step_ << " s");
-  const int expected_subscribers = static_cast<int>(numberParam(pnh, "wait_for_subscribers", 1.0));
-  clock_ = std::make_unique<SimClock>(
-      nh, step_, speedup, [this](const ros::Time& now) { tick(now); },
-      [this, expected_subscribers] {
-        return static_cast<int>(state_pub_.getNumSubscribers()) >= expected_subscribers &&
-               actuator_sub_.getNumPublishers() > 0;
-      },
-      positiveParam(pnh, "start_timeout", 10.0));
+  clock_ = makePlantClock(nh, pnh, step_, 1.0, [this](const ros::Time& now) { tick(now); },
+                          state_pub_, actuator_sub_);
 }
 
 void NormaPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {

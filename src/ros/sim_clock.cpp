@@ -1,5 +1,7 @@
 #include "spherical_robots/ros/sim_clock.hpp"
 
+#include "spherical_robots/ros/ros_parameter_source.hpp"
+
 #include <rosgraph_msgs/Clock.h>
 
 #include <cmath>
@@ -76,6 +78,22 @@ double SimClock::realTimeFactor() const {
   const double wall = (ros::WallTime::now() - first_tick_wall_).toSec();
   if (first_tick_.isZero() || !(wall > 0.0)) return std::numeric_limits<double>::quiet_NaN();
   return (now_ - first_tick_).toSec() / wall;
+}
+
+std::unique_ptr<SimClock> makePlantClock(ros::NodeHandle nh, const ros::NodeHandle& pnh,
+                                         double step, double default_speedup, SimClock::Tick tick,
+                                         const ros::Publisher& state,
+                                         const ros::Subscriber& actuators) {
+  const bool publish_clock = boolParam(pnh, "publish_clock", false);
+  const double speedup = publish_clock ? numberParam(pnh, "speedup", default_speedup) : 0.0;
+  const int expected_subscribers = static_cast<int>(numberParam(pnh, "wait_for_subscribers", 1.0));
+  return std::make_unique<SimClock>(
+      nh, step, speedup, std::move(tick),
+      [state, actuators, expected_subscribers] {
+        return static_cast<int>(state.getNumSubscribers()) >= expected_subscribers &&
+               actuators.getNumPublishers() > 0;
+      },
+      positiveParam(pnh, "start_timeout", 10.0));
 }
 
 }  // namespace spherical_robots

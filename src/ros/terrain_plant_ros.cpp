@@ -55,20 +55,12 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.setHardwareID(terrain::toString(type_) + " sphere");
   updater_.add("terrain plant", this, &TerrainPlantRos::diagnose);
 
-  const bool publish_clock = boolParam(pnh, "publish_clock", false);
-  const double speedup = publish_clock ? numberParam(pnh, "speedup", 10.0) : 0.0;
   ROS_INFO_STREAM(terrain::toString(type_) << " sphere, R = " << radius << " m, "
                                            << terrain::toString(model) << " contact model, on "
                                            << surface_->describe() << "; frames " << base_frame_
                                            << ", " << heading_frame_);
-  const int expected_subscribers = static_cast<int>(numberParam(pnh, "wait_for_subscribers", 1.0));
-  clock_ = std::make_unique<SimClock>(
-      nh, step_, speedup, [this](const ros::Time& now) { tick(now); },
-      [this, expected_subscribers] {
-        return static_cast<int>(state_pub_.getNumSubscribers()) >= expected_subscribers &&
-               actuator_sub_.getNumPublishers() > 0;
-      },
-      positiveParam(pnh, "start_timeout", 10.0));
+  clock_ = makePlantClock(nh, pnh, step_, 10.0, [this](const ros::Time& now) { tick(now); },
+                          state_pub_, actuator_sub_);
 }
 
 void TerrainPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {

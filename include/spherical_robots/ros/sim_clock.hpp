@@ -7,6 +7,9 @@
 #include <ros/wall_timer.h>
 
 #include <functional>
+#include <memory>
+
+#include <ros/subscriber.h>
 
 namespace spherical_robots {
 
@@ -56,5 +59,14 @@ class SimClock {
   ros::Time first_tick_;
   ros::WallTime first_tick_wall_;
 };
+
+/// A plant's clock from its private parameters (pnh): publish_clock (false) and speedup
+/// (default_speedup) choose whether it owns simulated time; if it does, time starts once
+/// wait_for_subscribers (1) nodes read `state` and something publishes on `actuators`, or after
+/// start_timeout [s] (10). @throw std::invalid_argument as SimClock, or on a bad parameter.
+std::unique_ptr<SimClock> makePlantClock(ros::NodeHandle nh, const ros::NodeHandle& pnh,
+                                         double step, double default_speedup, SimClock::Tick tick,
+                                         const ros::Publisher& state,
+                                         const ros::Subscriber& actuators);
 
 }  // namespace spherical_robots
