@@ -4,6 +4,7 @@
 #include <nav_msgs/Path.h>
 #include <sensor_msgs/JointState.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -21,6 +22,7 @@ const std::string kWorldFrame = "world";
 constexpr double kPathPeriod = 200.0 * M_PI;  // [s] eq 52 repeats after 2π / 0.01
 constexpr int kDesiredPathSamples = 2000;
 constexpr double kMaxIntegrationGap = 0.1;  // [s] a longer gap between states is not integrated
+constexpr double kLateAge = 0.002;           // [s] two 1 ms ticks: the delay the 1 kHz loop is built for
 
 norma::ControllerKind controllerFromString(const std::string& name) {
   if (name == "paper") return norma::ControllerKind::kPaper;
@@ -97,6 +99,14 @@ void NormaControllerRos::onState(const spherical_robots::NormaState& msg) {
   command.name = {"pendulum_motor", "slider_motor"};
   command.effort = {last_output_.torque, last_output_.force};
   command_pub_.publish(command);
+  const double age = (ros::Time::now() - now).toSec();
+  max_state_age_ = std::max(max_state_age_, age);
+  if (age > kLateAge) {
+    ++late_commands_;
+    ROS_WARN_STREAM_THROTTLE(1.0, "Norma controller is late: a command left "
+                                      << age * 1e3 << " ms (ROS time) after its state; the loop "
+                                                      "is built for <= 2 ms (lower the speed-up)");
+  }
 
   if (periodDue(last_publish_, now, publish_period_)) {
     last_publish_ = now;
@@ -127,6 +137,11 @@ void NormaControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& s
   status.add("F [N]", last_output_.force);
   status.add("theta_dot_d [rad/s]", last_output_.theta_dot_d);
   status.add("delta_d [m]", last_output_.delta_d);
+  status.add("max state age at command [ms]", max_state_age_ * 1e3);
+  status.add("late commands (> 2 ms)", late_commands_);
+  if (max_state_age_ > kLateAge)
+    status.mergeSummary(diagnostic_msgs::DiagnosticStatus::WARN, "commands late: lower the speed-up");
+  max_state_age_ = 0.0;
   input_.report(status, ros::Time::now());
 }
 

@@ -23,6 +23,9 @@ namespace spherical_robots {
 /// integrals advance by the time between consecutive states. Publishes tracking_error, target,
 /// desired_path (latched, one period of eq 52) and /diagnostics. A bad state is rejected
 /// (nothing is commanded for it; the hardware's watchdog catches a silent controller).
+/// The loop is real time: nothing waits for the controller. /diagnostics reports how old each
+/// state is (in ROS time) when its command leaves, and warns about commands later than 2 ms —
+/// the paper's inner loop does not survive much more delay (docs/conventions.md).
 class NormaControllerRos {
  public:
   /// @throw std::invalid_argument on a bad parameter or URDF.
@@ -39,6 +42,8 @@ class NormaControllerRos {
   ros::Time last_state_;
   ros::Time last_publish_;
   Eigen::Vector3d integrals_ = Eigen::Vector3d::Zero();
+  double max_state_age_ = 0.0;         ///< [s] since the last report: ROS time a state waited
+  unsigned long late_commands_ = 0;    ///< commands sent more than kLateAge after their state
   norma::ControlOutput last_output_;
   InputMonitor input_;
   ros::Subscriber state_sub_;
