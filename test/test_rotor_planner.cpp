@@ -168,6 +168,37 @@ TEST(RotorPlanner, UnreachableShiftGivesAReason) {
   EXPECT_NE(square.reason.find("polygon"), std::string::npos) << square.reason;
 }
 
+TEST(RotorPlanner, ZeroTargetAndPureTurns) {
+  // Back to the start with no turn: the symmetric figure eights whose shift vanishes (h(a, a) = 0,
+  // found here by an independent scan), never the null manoeuvre a = b -> 0.
+  const double k = 2.5;
+  const PlanRequest request{k, 1, 0.0, 0.0, 0.0, 0.6, 0};
+  const PlanResult result = planRotorMotion(request);
+  ASSERT_FALSE(result.solutions.empty()) << result.reason;
+  for (const RotorPlan& plan : result.solutions) {
+    EXPECT_GE(std::min(plan.a, plan.b), 0.01);
+    expectReaches(request, plan, 1e-8);
+  }
+  const auto signedShift = [k](double a) {
+    const StepResult step = rotorStep(k, FigureEight(a, a));
+    const double axis = -0.5 * step.half.psi;
+    return step.full.u_a * std::cos(axis) + step.full.v_a * std::sin(axis);
+  };
+  double a0 = 0.05, h0 = signedShift(a0);
+  for (int i = 1; i <= 1100; ++i) {
+    const double a1 = 0.05 + 0.55 * i / 1100, h1 = signedShift(a1);
+    if ((h0 < 0) != (h1 < 0)) {
+      EXPECT_NE(findSymmetric(result, 0.5 * (a0 + a1), 0.55 / 1100), nullptr) << "a near " << a0;
+    }
+    a0 = a1;
+    h0 = h1;
+  }
+  // A pure turn: three equations for two radii, no plan in general, and the reason says so.
+  const PlanResult turn = planRotorMotion({k, 2, 0.0, 0.0, 0.5, 0.7, 0});
+  EXPECT_TRUE(turn.solutions.empty());
+  EXPECT_NE(turn.reason.find("pure turn"), std::string::npos) << turn.reason;
+}
+
 TEST(RotorPlanner, RejectsBadRequests) {
   EXPECT_THROW(planRotorMotion({-0.1, 1, 0, 1, 0, 0.7, 0}), std::invalid_argument);
   EXPECT_THROW(planRotorMotion({1.0, 0, 0, 1, 0, 0.7, 0}), std::invalid_argument);
