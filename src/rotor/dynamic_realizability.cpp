@@ -83,6 +83,17 @@ double realizableHeadingRate(double k, const ContactCoordinates& coordinates, do
          k * std::tan(coordinates.u_o) / cv * v_o_rate;  // eq 20
 }
 
+Eigen::Vector3d curveAngularVelocity(double k, const CurvePoint& curve, double psi,
+                                     double theta_rate) {
+  requireFinite(theta_rate, "theta rate [1/s]");
+  const PlaneState rates = realizableCurveRates(k, curve, psi);  // eq 30
+  const Eigen::Vector2d angles = contactAngles(curve.point);
+  const Eigen::Vector2d angle_rates = contactAngleRates(curve);  // eq 27
+  const ContactCoordinates at{0.0, 0.0, angles.x(), angles.y(), psi};
+  return angularVelocity(at, angle_rates.x() * theta_rate, angle_rates.y() * theta_rate,
+                         rates.psi * theta_rate);
+}
+
 RotorSpeeds rotorSpeeds(double k, double inertia_scale, const ContactCoordinates& coordinates,
                         const Eigen::Vector3d& omega) {
   requirePositive(inertia_scale, "rotor inertia scale J_zz/J_r");

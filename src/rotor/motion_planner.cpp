@@ -159,7 +159,7 @@ Eigen::MatrixXd jacobian(const Equations& equations, const Leaf& leaf, const Eig
 }
 
 /// Newton's method on the interpolated leaves from a table cell: the interpolant's root, if it
-/// converges inside (0, max_radius]^2.
+/// converges inside [kMinRadius, max_radius]^2.
 std::optional<Eigen::Vector2d> modelRoot(const Equations& equations, const LeafTable& table,
                                          Eigen::Vector2d x, double max_radius) {
   const auto model = [&table](double r) { return table.interpolate(r); };
