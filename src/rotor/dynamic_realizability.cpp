@@ -110,4 +110,18 @@ RotorSpeeds rotorSpeeds(double k, double inertia_scale, const ContactCoordinates
   return {-inertia_scale * r.col(0).dot(momentum), -inertia_scale * r.col(1).dot(momentum)};
 }
 
+Eigen::Vector3d rotorAngularVelocity(double k, double inertia_scale,
+                                     const ContactCoordinates& coordinates,
+                                     const RotorSpeeds& speeds) {
+  requirePositive(k, "inertia ratio k");
+  requirePositive(inertia_scale, "rotor inertia scale J_zz/J_r");
+  requireFinite(speeds.phi1, "rotor speed phi1 [rad/s]");
+  requireFinite(speeds.phi2, "rotor speed phi2 [rad/s]");
+  const Eigen::Matrix3d r = orientation(coordinates.u_o, coordinates.v_o, coordinates.psi);
+  const Eigen::Vector3d rotor_momentum = r.col(0) * speeds.phi1 + r.col(1) * speeds.phi2;
+  // Eq 11: J_c ω = −J_r (n1 φ̇1 + n2 φ̇2), J_c = J_zz diag(k, k, 1).
+  return -Eigen::Vector3d(rotor_momentum.x() / k, rotor_momentum.y() / k, rotor_momentum.z()) /
+         inertia_scale;
+}
+
 }  // namespace spherical_robots::rotor

@@ -62,4 +62,13 @@ struct RotorSpeeds {
 RotorSpeeds rotorSpeeds(double k, double inertia_scale, const ContactCoordinates& coordinates,
                         const Eigen::Vector3d& omega);
 
+/// Eq 11 solved for ω [rad/s, in Σ_a], the plant's direction: the sphere's angular velocity for
+/// measured rotor speeds, ω = −(1/inertia_scale) diag(1/k, 1/k, 1) (n1 φ̇1 + n2 φ̇2). It always
+/// satisfies eq 13. With contactRates() (eqs 6-10) it integrates the rolling sphere.
+/// @throw std::invalid_argument on a non-finite input, k <= 0 (J_c singular) or
+///        inertia_scale <= 0.
+Eigen::Vector3d rotorAngularVelocity(double k, double inertia_scale,
+                                     const ContactCoordinates& coordinates,
+                                     const RotorSpeeds& speeds);
+
 }  // namespace spherical_robots::rotor
