@@ -2,10 +2,12 @@
 # Benchmarks the terrain batch run (200 s, dt 5 ms: 40,000 RK4 steps; 2,001 CSV rows):
 #  1. bench_terrain (Google Benchmark): the sphere_sim command in-process, and the run without CSV;
 #     bench_freebot: FreeBOT IK over 10,000 random reachable targets of a 3-joint chain;
+#     bench_rotor: the two-rotor sphere's n-step planner (k 0..5 x n 1..5; target < 50 ms each);
 #  2. the CPU time (user + sys) of whole `sphere_sim terrain` processes, one 200 s circle run per
 #     robot type, run from the install space without --config, against a 10 ms target.
 # usage: scripts/run_benchmarks.sh [REPEATS]    (processes per robot type, default 20)
-# SR_BIN_DIR=DIR uses sphere_sim and bench_terrain from DIR instead of building the workspace.
+# SR_BIN_DIR=DIR uses sphere_sim, bench_terrain and bench_rotor from DIR instead of building the
+# workspace.
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 cd "$SR_ROOT"
@@ -17,12 +19,13 @@ else
   sr_step "build (colcon, Release; incremental)" sr_build
   bin=install/spherical_robots/lib/spherical_robots
 fi
-for program in sphere_sim bench_terrain bench_freebot; do
+for program in sphere_sim bench_terrain bench_freebot bench_rotor; do
   [ -x "$bin/$program" ] || { sr_log "no $bin/$program (is libbenchmark-dev installed?)"; exit 1; }
 done
 
 sr_step "Google Benchmark: bench_terrain" "$bin/bench_terrain"
 sr_step "Google Benchmark: bench_freebot (IK, 10,000 targets per case)" "$bin/bench_freebot"
+sr_step "Google Benchmark: bench_rotor" "$bin/bench_rotor"
 
 sr_log "CPU time of whole sphere_sim processes ($repeats per case)"
 python3 - "$bin/sphere_sim" "$repeats" <<'EOF'

@@ -284,6 +284,35 @@ TEST(RotorPhase, PlannedMotionIsRealizableAndRolls) {
   }
 }
 
+TEST(RotorPhase, CurveAngularVelocityIsTheDerivativeOfTheIntegratedOrientation) {
+  // Along an integrated figure eight, ω = vee(Ṙ Rᵀ) of R(u_o(θ), v_o(θ), ψ(θ)) by central
+  // differences (θ̇ = 1); the rotors can produce it (eq 11) and the contact rolls (eqs 6-7).
+  const double k = 3.0, h = 1e-5;
+  const FigureEight curve(0.5, 0.35, 0.9);
+  const auto orientationAt = [&](double theta) {
+    const PlaneState s = integrateFigureEight(k, curve, 0.0, theta, PlaneState{});
+    const Eigen::Vector2d angles = contactAngles(curve.at(theta).point);
+    return orientation(angles.x(), angles.y(), s.psi);
+  };
+  for (double theta : {0.4, 1.3, 2.9, 3.6, 5.1}) {
+    const Eigen::Matrix3d r = orientationAt(theta);
+    const Eigen::Matrix3d w = (orientationAt(theta + h) - orientationAt(theta - h)) / (2 * h) *
+                              r.transpose();
+    const Eigen::Vector3d expected(w(2, 1), w(0, 2), w(1, 0));
+    const PlaneState s = integrateFigureEight(k, curve, 0.0, theta, PlaneState{});
+    const Eigen::Vector3d omega = curveAngularVelocity(k, curve.at(theta), s.psi, 1.0);
+    EXPECT_LE((omega - expected).norm(), 1e-6) << theta;
+    const Eigen::Vector2d angles = contactAngles(curve.at(theta).point);
+    const ContactCoordinates at{s.u_a, s.v_a, angles.x(), angles.y(), s.psi};
+    EXPECT_NEAR(realizabilityResidual(k, at, omega), 0.0, 1e-12);
+    const PlaneState rates = realizableCurveRates(k, curve.at(theta), s.psi);
+    EXPECT_NEAR(rates.u_a, omega.y(), 1e-12);
+    EXPECT_NEAR(rates.v_a, -omega.x(), 1e-12);
+    // Twice the rate, twice ω.
+    EXPECT_LE((curveAngularVelocity(k, curve.at(theta), s.psi, 2.0) - 2 * omega).norm(), 1e-12);
+  }
+}
+
 TEST(RotorPhase, RejectsBadInput) {
   EXPECT_THROW(FigureEight(0.0, 0.3), std::invalid_argument);
   EXPECT_THROW(FigureEight(0.3, 0.71), std::invalid_argument);

@@ -7,11 +7,15 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
+#include <boost/numeric/odeint.hpp>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "spherical_robots/rotor/contact_kinematics.hpp"
+#include "spherical_robots/rotor/dynamic_realizability.hpp"
 #include "spherical_robots/rotor/figure_eight.hpp"
 #include "spherical_robots/rotor/geometric_phase.hpp"
 #include "spherical_robots/rotor/motion_planner.hpp"
@@ -166,6 +170,88 @@ TEST(RotorPlanner, UnreachableShiftGivesAReason) {
   const PlanResult square = planRotorMotion({1.0, 4, 1.0, 0.0, 2 * M_PI, 0.7, 0});
   EXPECT_TRUE(square.solutions.empty());
   EXPECT_NE(square.reason.find("polygon"), std::string::npos) << square.reason;
+}
+
+TEST(RotorPlanner, ZeroTargetAndPureTurns) {
+  // Back to the start with no turn: the symmetric figure eights whose shift vanishes (h(a, a) = 0,
+  // found here by an independent scan), never the null manoeuvre a = b -> 0.
+  const double k = 2.5;
+  const PlanRequest request{k, 1, 0.0, 0.0, 0.0, 0.6, 0};
+  const PlanResult result = planRotorMotion(request);
+  ASSERT_FALSE(result.solutions.empty()) << result.reason;
+  for (const RotorPlan& plan : result.solutions) {
+    EXPECT_GE(std::min(plan.a, plan.b), 0.01);
+    expectReaches(request, plan, 1e-8);
+  }
+  const auto signedShift = [k](double a) {
+    const StepResult step = rotorStep(k, FigureEight(a, a));
+    const double axis = -0.5 * step.half.psi;
+    return step.full.u_a * std::cos(axis) + step.full.v_a * std::sin(axis);
+  };
+  double a0 = 0.05, h0 = signedShift(a0);
+  for (int i = 1; i <= 1100; ++i) {
+    const double a1 = 0.05 + 0.55 * i / 1100, h1 = signedShift(a1);
+    if ((h0 < 0) != (h1 < 0)) {
+      EXPECT_NE(findSymmetric(result, 0.5 * (a0 + a1), 0.55 / 1100), nullptr) << "a near " << a0;
+    }
+    a0 = a1;
+    h0 = h1;
+  }
+  // A pure turn: three equations for two radii, no plan in general, and the reason says so.
+  const PlanResult turn = planRotorMotion({k, 2, 0.0, 0.0, 0.5, 0.7, 0});
+  EXPECT_TRUE(turn.solutions.empty());
+  EXPECT_NE(turn.reason.find("pure turn"), std::string::npos) << turn.reason;
+}
+
+TEST(RotorPlanner, ExecutingAPlanThroughTheRotorsReachesTheTarget) {
+  // Open loop at θ̇ = 1 rad/s: rotor set-points from the plan (eq 11 on the planned ω), and a
+  // plant that knows only the rotor speeds: ω from eq 11 solved for ω, contact coordinates from
+  // Montana's eqs 6-10 (not the curve form the planner integrates).
+  const double k = 2.5, scale = 12.0;
+  const PlanRequest request{k, 2, 0.5, 0.3, 0.4, 0.7, 0};
+  const PlanResult result = planRotorMotion(request);
+  ASSERT_FALSE(result.solutions.empty()) << result.reason;
+  const RotorPlan& plan = result.solutions.front();
+  const FigureEight curve(plan.a, plan.b, plan.gamma);
+  // State: the plan's (u_a, v_a, ψ) along the curve, then the plant's (u_a, v_a, u_o, v_o, ψ).
+  using State = std::array<double, 8>;
+  State x{};
+  for (int step = 0; step < request.steps; ++step) {
+    for (bool second : {false, true}) {
+      const auto rhs = [&](const State& s, State& dxdt, double theta) {
+        const CurvePoint c = curve.onLeaf(second, theta);
+        const PlaneState planned = realizableCurveRates(k, c, s[2]);
+        const Eigen::Vector2d angles = contactAngles(c.point);
+        const ContactCoordinates planned_at{s[0], s[1], angles.x(), angles.y(), s[2]};
+        const RotorSpeeds speeds =
+            rotorSpeeds(k, scale, planned_at, curveAngularVelocity(k, c, s[2], 1.0));
+        const ContactCoordinates plant_at{s[3], s[4], s[5], s[6], s[7]};
+        const ContactRates rates =
+            contactRates(plant_at, rotorAngularVelocity(k, scale, plant_at, speeds));
+        dxdt = {planned.u_a, planned.v_a, planned.psi, rates.u_a, rates.v_a,
+                rates.u_o,   rates.v_o,   rates.psi};
+      };
+      const double lo = second ? M_PI : 0.0;
+      // A different integrator from the planner's (Dormand-Prince 5(4)).
+      boost::numeric::odeint::integrate_adaptive(
+          boost::numeric::odeint::make_controlled<
+              boost::numeric::odeint::runge_kutta_dopri5<State>>(1e-12, 1e-12),
+          rhs, x, lo, lo + M_PI, 0.01);
+    }
+  }
+  EXPECT_NEAR(x[3], request.u_a, 1e-8);
+  EXPECT_NEAR(x[4], request.v_a, 1e-8);
+  EXPECT_NEAR(x[5], 0.0, 1e-8);  // back at the south pole
+  EXPECT_NEAR(x[6], 0.0, 1e-8);
+  EXPECT_NEAR(x[7], request.psi, 1e-8);
+  // Rotor speeds and ω round-trip at a sample state.
+  const ContactCoordinates at{0.1, 0.2, 0.3, -0.2, 0.7};
+  const Eigen::Vector3d omega = curveAngularVelocity(k, curve.at(1.0), 0.7, 1.3);
+  const Eigen::Vector2d angles = contactAngles(curve.at(1.0).point);
+  const ContactCoordinates on_curve{0.1, 0.2, angles.x(), angles.y(), 0.7};
+  EXPECT_LE((rotorAngularVelocity(k, scale, on_curve, rotorSpeeds(k, scale, on_curve, omega)) -
+             omega).norm(), 1e-12);
+  EXPECT_THROW(rotorAngularVelocity(0.0, scale, at, {1.0, 1.0}), std::invalid_argument);
 }
 
 TEST(RotorPlanner, RejectsBadRequests) {

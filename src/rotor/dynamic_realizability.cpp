@@ -83,6 +83,17 @@ double realizableHeadingRate(double k, const ContactCoordinates& coordinates, do
          k * std::tan(coordinates.u_o) / cv * v_o_rate;  // eq 20
 }
 
+Eigen::Vector3d curveAngularVelocity(double k, const CurvePoint& curve, double psi,
+                                     double theta_rate) {
+  requireFinite(theta_rate, "theta rate [1/s]");
+  const PlaneState rates = realizableCurveRates(k, curve, psi);  // eq 30
+  const Eigen::Vector2d angles = contactAngles(curve.point);
+  const Eigen::Vector2d angle_rates = contactAngleRates(curve);  // eq 27
+  const ContactCoordinates at{0.0, 0.0, angles.x(), angles.y(), psi};
+  return angularVelocity(at, angle_rates.x() * theta_rate, angle_rates.y() * theta_rate,
+                         rates.psi * theta_rate);
+}
+
 RotorSpeeds rotorSpeeds(double k, double inertia_scale, const ContactCoordinates& coordinates,
                         const Eigen::Vector3d& omega) {
   requirePositive(inertia_scale, "rotor inertia scale J_zz/J_r");
@@ -97,6 +108,20 @@ RotorSpeeds rotorSpeeds(double k, double inertia_scale, const ContactCoordinates
   const Eigen::Vector3d momentum(k * omega.x(), k * omega.y(), omega.z());  // J_c ω / J_zz
   // Eq 11 projected on the orthonormal n1, n2: J_r φ̇_i = −n_i · J_c ω.
   return {-inertia_scale * r.col(0).dot(momentum), -inertia_scale * r.col(1).dot(momentum)};
+}
+
+Eigen::Vector3d rotorAngularVelocity(double k, double inertia_scale,
+                                     const ContactCoordinates& coordinates,
+                                     const RotorSpeeds& speeds) {
+  requirePositive(k, "inertia ratio k");
+  requirePositive(inertia_scale, "rotor inertia scale J_zz/J_r");
+  requireFinite(speeds.phi1, "rotor speed phi1 [rad/s]");
+  requireFinite(speeds.phi2, "rotor speed phi2 [rad/s]");
+  const Eigen::Matrix3d r = orientation(coordinates.u_o, coordinates.v_o, coordinates.psi);
+  const Eigen::Vector3d rotor_momentum = r.col(0) * speeds.phi1 + r.col(1) * speeds.phi2;
+  // Eq 11: J_c ω = −J_r (n1 φ̇1 + n2 φ̇2), J_c = J_zz diag(k, k, 1).
+  return -Eigen::Vector3d(rotor_momentum.x() / k, rotor_momentum.y() / k, rotor_momentum.z()) /
+         inertia_scale;
 }
 
 }  // namespace spherical_robots::rotor

@@ -33,6 +33,9 @@ constexpr int kNewtonIterations = 30;
 constexpr double kDuplicate = 1e-7;    // two roots closer than this in (a, b) are one [R]
 constexpr double kAcceptedError = 1e-6;  // largest final_error of a reported plan
 constexpr double kZeroShift = 1e-12;   // h_des below this is a pure turn [R]
+// Smallest circle of a plan [R]: the null manoeuvre a, b -> 0 solves a pure turn's equations to
+// within the tolerances (a leaf's shift is ~2π a³), so tinier circles are not plans.
+constexpr double kMinRadius = 0.01;
 
 /// The leaf table: radii (the first is 0, the limit where a leaf does nothing), their phases,
 /// and a smooth interpolant of them (modified Akima) that gives Newton its start and Jacobian.
@@ -156,7 +159,7 @@ Eigen::MatrixXd jacobian(const Equations& equations, const Leaf& leaf, const Eig
 }
 
 /// Newton's method on the interpolated leaves from a table cell: the interpolant's root, if it
-/// converges inside (0, max_radius]^2.
+/// converges inside [kMinRadius, max_radius]^2.
 std::optional<Eigen::Vector2d> modelRoot(const Equations& equations, const LeafTable& table,
                                          Eigen::Vector2d x, double max_radius) {
   const auto model = [&table](double r) { return table.interpolate(r); };
@@ -166,7 +169,9 @@ std::optional<Eigen::Vector2d> modelRoot(const Equations& equations, const LeafT
     const Eigen::Vector2d delta =
         jacobian(equations, model, x, at_a, at_b, f, max_radius).colPivHouseholderQr().solve(-f);
     x += delta;
-    if (!x.allFinite() || x.minCoeff() <= 0.0 || x.maxCoeff() > max_radius) return std::nullopt;
+    if (!x.allFinite() || x.minCoeff() < kMinRadius || x.maxCoeff() > max_radius) {
+      return std::nullopt;
+    }
     if (delta.cwiseAbs().maxCoeff() < 1e-13) return x;
   }
   return std::nullopt;
@@ -196,7 +201,9 @@ std::optional<Eigen::Vector2d> polish(double k, const Equations& equations,
     }
     const Eigen::Vector2d delta = j.colPivHouseholderQr().solve(-f);
     x += delta;
-    if (!x.allFinite() || x.minCoeff() <= 0.0 || x.maxCoeff() > max_radius) return std::nullopt;
+    if (!x.allFinite() || x.minCoeff() < kMinRadius || x.maxCoeff() > max_radius) {
+      return std::nullopt;
+    }
     at_a = integrated(x.x());
     at_b = integrated(x.y());
     const Eigen::VectorXd next = equations.residual(composeLeaves(at_a, at_b));
@@ -357,11 +364,15 @@ std::vector<RotorPlan> planHeading(const PlanRequest& request, double psi, const
     }
   }
   if (plans.empty()) {
-    why << "no figure eight with radii a, b <= " << request.max_radius
+    why << "no figure eight with radii " << kMinRadius << " R <= a, b <= " << request.max_radius
         << " R has eta = psi/n = " << equations.eta << " and h = " << equations.h
         << " R (k = " << request.k
         << "; over that range eta spans about [" << grid.eta_lo << ", " << grid.eta_hi
         << "] and h reaches about " << grid.h_hi << " R)";
+    if (equations.pure_turn) {
+      why << "; a pure turn needs zero shift and eta = psi/n, three equations for the two radii, "
+             "which have no common solution in general";
+    }
     if (rejected > 0) why << "; " << rejected << " root(s) failed verification";
     reasons.push_back(why.str());
   }

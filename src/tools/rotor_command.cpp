@@ -121,7 +121,8 @@ JSON members (numbers with 17 significant digits):
   reason     only when there is no solution: why
 stdout: one line (number of solutions and the shortest, or the reason).
 
-Every root is verified by integration; plans with final_error > 1e-6 are dropped.
+Radii of a plan are >= 0.01 (smaller circles approach the null manoeuvre a = b = 0). Every
+root is verified by integration; plans with final_error > 1e-6 are dropped.
 Exit status: 0 at least one plan; 3 no plan within the limits (the file holds "solutions": []
 and "reason"); 2 usage error (a fraction for --steps or --heading-turns, a target that is not
 three numbers); 4 invalid input (non-finite number, k < 0, steps < 1, max radius not in

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "spherical_robots/rotor/contact_curve.hpp"
 #include "spherical_robots/rotor/contact_kinematics.hpp"
 
 namespace spherical_robots::rotor {
@@ -41,6 +42,13 @@ double realizabilityResidual(double k, const ContactCoordinates& coordinates,
 double realizableHeadingRate(double k, const ContactCoordinates& coordinates, double u_o_rate,
                              double v_o_rate);
 
+/// The angular velocity [rad/s, in Σ_a] of the sphere tracing a contact curve at rate θ̇ [1/s]
+/// with heading ψ: u̇_o, v̇_o from eq 27, ψ̇ from eq 30 (= eq 20), ω from eqs 17-19. It satisfies
+/// eq 13, so rotorSpeeds() can realize it: this is how a plan is executed.
+/// @throw std::invalid_argument as realizableCurveRates(), or on a non-finite θ̇.
+Eigen::Vector3d curveAngularVelocity(double k, const CurvePoint& curve, double psi,
+                                     double theta_rate);
+
 /// Rotor speeds φ̇1, φ̇2 [rad/s] about n1, n2 (eq 11 projected on n1 and n2):
 /// φ̇_i = −(J_zz / J_r) n_i · diag(k, k, 1) ω.
 struct RotorSpeeds {
@@ -53,5 +61,14 @@ struct RotorSpeeds {
 ///        realizable: |realizabilityResidual| > 1e-9 (|ω| + 1).
 RotorSpeeds rotorSpeeds(double k, double inertia_scale, const ContactCoordinates& coordinates,
                         const Eigen::Vector3d& omega);
+
+/// Eq 11 solved for ω [rad/s, in Σ_a], the plant's direction: the sphere's angular velocity for
+/// measured rotor speeds, ω = −(1/inertia_scale) diag(1/k, 1/k, 1) (n1 φ̇1 + n2 φ̇2). It always
+/// satisfies eq 13. With contactRates() (eqs 6-10) it integrates the rolling sphere.
+/// @throw std::invalid_argument on a non-finite input, k <= 0 (J_c singular) or
+///        inertia_scale <= 0.
+Eigen::Vector3d rotorAngularVelocity(double k, double inertia_scale,
+                                     const ContactCoordinates& coordinates,
+                                     const RotorSpeeds& speeds);
 
 }  // namespace spherical_robots::rotor

@@ -41,7 +41,8 @@ struct PlanResult {
 };
 
 /// Solves eqs 32-33 on a grid of leaf integrations, refines every root by Newton's method on
-/// integrated leaves, aims each with γ and verifies it by integrating all n steps.
+/// integrated leaves, aims each with γ and verifies it by integrating all n steps. Circles
+/// smaller than 0.01 R are not plans (they approach the null manoeuvre a = b = 0).
 /// Solutions whose final_error exceeds 1e-6 are dropped (and counted in the reason if none remain).
 /// @throw std::invalid_argument on a non-finite input, k < 0, steps < 1, max_radius outside
 ///        (0, kMaxCircleRadius) or heading_turns < 0.
