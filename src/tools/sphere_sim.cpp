@@ -1,12 +1,13 @@
 // sphere_sim: batch runs of the spherical_robots models from the command line.
 #include <iostream>
 
+#include "norma_command.hpp"
 #include "roller_command.hpp"
 #include "sphere_sim_cli.hpp"
 #include "terrain_command.hpp"
 
 int main(int argc, char** argv) {
   using namespace spherical_robots::sphere_sim;
-  return runSphereSim({terrainCommand(), rollerCommand()},
+  return runSphereSim({terrainCommand(), rollerCommand(), normaCommand()},
                       std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
 }
