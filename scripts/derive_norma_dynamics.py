@@ -15,6 +15,8 @@ import random
 import sys
 
 import sympy as sp
+from sympy.printing.cxx import CXX17CodePrinter
+from sympy.printing.precedence import PRECEDENCE
 
 th, al, ph, de = sp.symbols('theta alpha phi delta', real=True)
 thd, ald, phd, ded = sp.symbols('thetad alphad phid deltad', real=True)
@@ -162,6 +164,18 @@ def compare(T, V):
     return M, G, Ma, Ga, disagreements
 
 
+class ProductPowerPrinter(CXX17CodePrinter):
+    """Writes small integer powers as products: std::pow is not reduced to them without
+    -ffast-math, and the evaluation must stay well under a microsecond."""
+
+    def _print_Pow(self, expr):
+        base, exp = expr.as_base_exp()
+        if exp.is_Integer and 2 <= exp <= 4:
+            b = self.parenthesize(base, PRECEDENCE['Mul'])
+            return '*'.join([b] * int(exp))
+        return super()._print_Pow(expr)
+
+
 def emit_cpp(path, M, G):
     """C++ for M, dM/dbeta, dM/dphi, dM/ddelta and G; M depends on theta and alpha only via beta."""
     bb = sp.Symbol('beta', real=True)
@@ -177,7 +191,7 @@ def emit_cpp(path, M, G):
     for i in range(4):
         exprs.append(Gb[i]); labels.append('gv(%d)' % i)
     rep = {sp.sin(bb): sb, sp.cos(bb): cb, sp.sin(ph): sf, sp.cos(ph): cf}
-    exprs = [sp.expand(sp.expand(sp.expand_trig(sp.simplify(e))).subs(rep).subs(de, dd - d0)) for e in exprs]
+    exprs = [sp.expand(sp.expand(sp.expand_trig(e)).subs(rep).subs(de, dd - d0)) for e in exprs]
     for e in exprs:
         if e.free_symbols & {th, al, bb, ph, de}:
             raise RuntimeError('trig substitution incomplete: %s' % e.free_symbols)
@@ -193,10 +207,11 @@ def emit_cpp(path, M, G):
              'inline void evaluateTextTerms(const NormaParameters& p, double sb, double cb, double sf,',
              '                              double cf, double d, Eigen::Matrix4d& m,',
              '                              std::array<Eigen::Matrix4d, 3>& dm, Eigen::Vector4d& gv) {']
+    printer = ProductPowerPrinter()
     for s_, e in subs_:
-        lines.append('  const double %s = %s;' % (s_, sp.cxxcode(e, standard='c++17')))
+        lines.append('  const double %s = %s;' % (s_, printer.doprint(e)))
     for lab, e in zip(labels, reduced):
-        lines.append('  %s = %s;' % (lab, sp.cxxcode(e, standard='c++17')))
+        lines.append('  %s = %s;' % (lab, printer.doprint(e)))
     lines.append('}')
     with open(path, 'w') as f:
         f.write('\n'.join(lines) + '\n')

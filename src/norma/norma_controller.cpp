@@ -10,8 +10,6 @@
 namespace spherical_robots::norma {
 namespace {
 
-double wrapAngle(double angle) { return std::atan2(std::sin(angle), std::cos(angle)); }
-
 void requireFinitePid(const PidGains& pid, const std::string& name) {
   requireFinite(pid.kp, name + " kp");
   requireFinite(pid.ki, name + " ki");
@@ -49,12 +47,17 @@ KinematicCommand kinematicLayer(const KinematicGains& gains, double R, double x,
   const double ex = x - reference.x;  // eq 48
   const double ey = y - reference.y;
   KinematicCommand out;
-  out.error = std::hypot(ex, ey);
-  out.zeta = wrapAngle(psi - std::atan2(ey, ex));  // eq 49, from e to the heading
-  const double normalized = out.error / (gains.k3 + out.error);
-  out.delta_d = gains.k1 * normalized * std::sin(out.zeta);  // eq 50
-  out.theta_dot_d = std::hypot(reference.x_dot, reference.y_dot) / R +
-                    gains.k2 * normalized * std::cos(out.zeta);  // eq 51
+  out.error = std::sqrt(ex * ex + ey * ey);
+  // Eq 49 from e to the heading h: ‖e‖ sin ζ = e × h, ‖e‖ cos ζ = e · h.
+  const double c = std::cos(psi), s = std::sin(psi);
+  const double e_sin = ex * s - ey * c;
+  const double e_cos = ex * c + ey * s;
+  out.zeta = std::atan2(e_sin, e_cos);
+  const double gain = 1.0 / (gains.k3 + out.error);  // ‖e‖ / (k3 + ‖e‖) over ‖e‖
+  out.delta_d = gains.k1 * gain * e_sin;              // eq 50
+  out.theta_dot_d = std::sqrt(reference.x_dot * reference.x_dot +
+                              reference.y_dot * reference.y_dot) / R +
+                    gains.k2 * gain * e_cos;  // eq 51
   return out;
 }
 
@@ -65,6 +68,7 @@ void validate(const ControllerGains& g) {
   requireFinitePid(g.rate, "PID1");
   requireFinitePid(g.pendulum, "PID2");
   requireFinitePid(g.slider, "PID3");
+  requireFinitePid(g.tracking_slider, "tracking slider PID");
   if (g.rate.kd != 0.0) {
     throw std::invalid_argument("PID1 kd must be 0 (a derivative on the measured rolling rate "
                                 "needs the acceleration), got " + std::to_string(g.rate.kd));
@@ -89,36 +93,38 @@ KinematicCommand NormaController::trackingLayer(const Vector4& q, const Vector4&
                                                 const PathPoint& r) const {
   const NormaParameters& p = parameters_;
   const ControllerGains& g = gains_;
-  const double speed = std::hypot(r.x_dot, r.y_dot);
-  const double path_heading = std::atan2(r.y_dot, r.x_dot);
+  const double speed_sq = r.x_dot * r.x_dot + r.y_dot * r.y_dot;
+  const double speed = std::sqrt(speed_sq);
   const double path_yaw_rate =
-      speed > 0.0 ? (r.x_dot * r.y_ddot - r.y_dot * r.x_ddot) / (speed * speed) : 0.0;
-  const double ex = r.x - x, ey = r.y - y;
+      speed_sq > 0.0 ? (r.x_dot * r.y_ddot - r.y_dot * r.x_ddot) / speed_sq : 0.0;
   const double c = std::cos(psi), s = std::sin(psi);
+  // The path's direction in the robot's heading frame: speed (cos, sin) of the heading error.
+  const double path_along = c * r.x_dot + s * r.y_dot;
+  const double path_across = -s * r.x_dot + c * r.y_dot;
+  const double ex = r.x - x, ey = r.y - y;
   const double along = c * ex + s * ey;
   const double cross = -s * ex + c * ey;
-  const double heading_error = wrapAngle(path_heading - psi);
 
   KinematicCommand out;
-  out.error = std::hypot(ex, ey);
-  out.zeta = wrapAngle(psi - std::atan2(-ey, -ex));
+  out.error = std::sqrt(ex * ex + ey * ey);
+  out.zeta = std::atan2(-ex * s + ey * c, -ex * c - ey * s);  // eq 49 with e = r − r_d
   const double cos_phi = std::cos(q(2));
-  const double v = speed * std::cos(heading_error) + g.along_gain * along;
-  out.theta_dot_d = v / (p.R * cos_phi);  // eq 12 along the heading
-  const double yaw_rate =
-      path_yaw_rate + speed * (g.cross_gain * cross + g.heading_gain * std::sin(heading_error));
-  // Eq 6 solved for the tilt; the rolling rate that divides is kept away from zero.
-  const double min_rate = 0.02 / p.R;
-  const double rate = std::copysign(std::max(std::abs(out.theta_dot_d), min_rate),
-                                    out.theta_dot_d);
-  const double max_tilt = std::atan(p.m_slider * g.max_slider / (p.m_pendulum * p.L));
-  const double phi_d =
-      std::clamp(std::asin(std::clamp(-yaw_rate / rate, -1.0, 1.0)), -max_tilt, max_tilt);
+  out.theta_dot_d = (path_along + g.along_gain * along) / (p.R * cos_phi);  // eq 12
+  // speed · sin(ψ_r − ψ) = path_across.
+  const double yaw_rate = path_yaw_rate + g.cross_gain * speed * cross + g.heading_gain * path_across;
+  // Eq 6 solved for the tilt, sin φ_d = −ψ̇_d / θ̇_d, with θ̇_d regularised near zero and the tilt
+  // saturated smoothly (tanh) so that the closed loop stays smooth for the stiff integrator.
+  const double rate_floor = 0.005 / p.R;
+  const double sin_phi = -yaw_rate * out.theta_dot_d /
+                         (out.theta_dot_d * out.theta_dot_d + rate_floor * rate_floor);
+  // Leave a fifth of the stroke to the tilt feedback.
+  const double max_tilt = std::atan(0.8 * p.m_slider * g.max_slider / (p.m_pendulum * p.L));
+  const double phi_d = max_tilt * std::tanh(std::atan(sin_phi) / max_tilt);
   // G3 = 0 with m_P L0 = m_Sl δ0 (eq 1): m_Sl δ C_φ + m_P L C_β S_φ = 0.
-  const double held = -p.m_pendulum * p.L * std::cos(q(1) - q(0)) * std::tan(phi_d) /
-                      p.m_slider;
-  out.delta_d = std::clamp(held + g.tilt_gain * (q(2) - phi_d) + g.tilt_damping * qd(2),
-                           -g.max_slider, g.max_slider);
+  const double held =
+      -p.m_pendulum * p.L * std::cos(q(1) - q(0)) * std::tan(phi_d) / p.m_slider;
+  const double slider = held + g.tilt_gain * (q(2) - phi_d) + g.tilt_damping * qd(2);
+  out.delta_d = g.max_slider * std::tanh(slider / g.max_slider);
   return out;
 }
 
@@ -130,6 +136,10 @@ ControlOutput NormaController::compute(const Vector4& q, const Vector4& qd, doub
     requireFinite(qd(i), "qd");
   }
   for (int i = 0; i < 3; ++i) requireFinite(integrals(i), "controller integral");
+  requireFinite(x, "X");
+  requireFinite(y, "Y");
+  requireFinite(psi, "psi");
+  requireFinitePath(reference);
   const KinematicCommand command =
       kind_ == ControllerKind::kPaper
           ? kinematicLayer(gains_.kinematic, parameters_.R, x, y, psi, reference)
@@ -147,8 +157,9 @@ ControlOutput NormaController::compute(const Vector4& q, const Vector4& qd, doub
   out.torque = g.pendulum.kp * beta_error + g.pendulum.ki * integrals(1) -
                g.pendulum.kd * (qd(1) - qd(0));
   // Fig. 5, lower loop: PID3 on δ plus the feed-forward that holds the slider against gravity.
+  const PidGains& slider = kind_ == ControllerKind::kPaper ? g.slider : g.tracking_slider;
   const double slider_error = command.delta_d - q(3);
-  out.force = g.slider.kp * slider_error + g.slider.ki * integrals(2) - g.slider.kd * qd(3) +
+  out.force = slider.kp * slider_error + slider.ki * integrals(2) - slider.kd * qd(3) +
               parameters_.g * parameters_.m_slider * std::sin(q(2));
   out.integrand = Eigen::Vector3d(rate_error, beta_error, slider_error);
   return out;

@@ -73,12 +73,10 @@ DynamicsTerms NormaDynamics::terms(const Vector4& q, const Vector4& qd) const {
   Matrix4 dm[4];
   evaluate(q, out.M, dm, out.G);
   // A.23, A.24 as C = ½ (Ṁ + W − Wᵀ) with column j of W = (∂M/∂q_j) q̇: then Ṁ − 2C = Wᵀ − W.
-  Matrix4 m_dot = Matrix4::Zero();
   Matrix4 w;
-  for (int k = 0; k < 4; ++k) {
-    m_dot += dm[k] * qd(k);
-    w.col(k) = dm[k] * qd;
-  }
+  for (int k = 0; k < 4; ++k) w.col(k) = dm[k] * qd;
+  Matrix4 m_dot = Matrix4::Zero();
+  for (int k = 0; k < 4; ++k) m_dot += dm[k] * qd(k);
   out.C = 0.5 * (m_dot + w - w.transpose());
   return out;
 }
@@ -101,9 +99,24 @@ Vector4 NormaDynamics::generalizedForces(double torque, double force) {
 }
 
 Vector4 NormaDynamics::acceleration(const Vector4& q, const Vector4& qd, const Vector4& u) const {
+  requireFiniteVector(q, false);
+  requireFiniteVector(qd, true);
   for (int i = 0; i < 4; ++i) requireFinite(u(i), "generalized force U");
-  const DynamicsTerms t = terms(q, qd);
-  return t.M.llt().solve(u - t.C * qd - t.G);
+  Matrix4 m;
+  Matrix4 dm[4];
+  Vector4 gv;
+  evaluate(q, m, dm, gv);
+  // C q̇ without forming C: with W as in terms(), W q̇ = Ṁ q̇ and Wᵀ q̇ = [q̇ᵀ ∂M/∂q_j q̇]_j,
+  // so C q̇ = Ṁ q̇ − ½ ∂(q̇ᵀ M q̇)/∂q.
+  Vector4 c_qd;
+  Vector4 m_dot_qd = Vector4::Zero();
+  for (int j = 0; j < 4; ++j) {
+    const Vector4 dm_qd = dm[j] * qd;
+    m_dot_qd += dm_qd * qd(j);
+    c_qd(j) = -0.5 * qd.dot(dm_qd);
+  }
+  c_qd += m_dot_qd;
+  return m.llt().solve(u - c_qd - gv);
 }
 
 double NormaDynamics::kineticEnergy(const Vector4& q, const Vector4& qd) const {

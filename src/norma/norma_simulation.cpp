@@ -44,13 +44,15 @@ NormaSample plantSample(const NormaDynamics& dynamics, const OdeState& x, double
 
 PathPoint lissajousPath(double t) {
   requireFinite(t, "t [s]");
+  const double s1 = std::sin(0.01 * t), c1 = std::cos(0.01 * t);
+  const double s2 = 2.0 * s1 * c1, c2 = c1 * c1 - s1 * s1;  // of 0.02 t
   PathPoint p;
-  p.x = 2.0 * std::sin(0.01 * t);
-  p.y = 1.5 * std::sin(0.02 * t);
-  p.x_dot = 0.02 * std::cos(0.01 * t);
-  p.y_dot = 0.03 * std::cos(0.02 * t);
-  p.x_ddot = -0.0002 * std::sin(0.01 * t);
-  p.y_ddot = -0.0006 * std::sin(0.02 * t);
+  p.x = 2.0 * s1;
+  p.y = 1.5 * s2;
+  p.x_dot = 0.02 * c1;
+  p.y_dot = 0.03 * c2;
+  p.x_ddot = -0.0002 * s1;
+  p.y_ddot = -0.0006 * s2;
   return p;
 }
 

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "freebot_command.hpp"
+#include "norma_command.hpp"
 #include "roller_command.hpp"
 #include "rotor_command.hpp"
 #include "sphere_sim_cli.hpp"
@@ -9,7 +10,8 @@
 
 int main(int argc, char** argv) {
   using namespace spherical_robots::sphere_sim;
-  return runSphereSim({terrainCommand(), rollerCommand(), rotorStepCommand(), rotorPlanCommand(),
-                       freebotFkCommand(), freebotIkCommand(), freebotWheelsCommand()},
+  return runSphereSim({terrainCommand(), rollerCommand(), normaCommand(), rotorStepCommand(),
+                       rotorPlanCommand(), freebotFkCommand(), freebotIkCommand(),
+                       freebotWheelsCommand()},
                       std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
 }

@@ -64,12 +64,15 @@ struct ControllerGains {
   PidGains pendulum{10.0, 7.0, 3.0};   ///< PID2: β_d − β [rad] → T [N m]
   PidGains slider{15.0, 3.0, 10.0};    ///< PID3: δ_d − δ [m] → F [N], plus g m_Sl sin φ
   // Tracking controller (ControllerKind::kTracking).
-  double along_gain = 0.05;    ///< k_x [1/s]: speed correction per metre of along-track error
-  double cross_gain = 0.4;     ///< k_y [1/m²]: yaw-rate correction per metre of cross-track error
-  double heading_gain = 0.5;   ///< k_ψ [1/m]: yaw-rate correction per radian of heading error
+  double along_gain = 0.2;     ///< k_x [1/s]: speed correction per metre of along-track error
+  double cross_gain = 20.0;    ///< k_y [1/m²]: yaw rate per (m/s of path speed · m across)
+  double heading_gain = 4.0;   ///< k_ψ [1/m]: yaw rate per m/s of path velocity across the heading
   double tilt_gain = 0.05;     ///< k_φ [m/rad]: slider set-point per radian of tilt error
-  double tilt_damping = 0.05;  ///< k_φ̇ [m s/rad]: slider set-point per rad/s of tilt rate
+  double tilt_damping = 0.12;  ///< k_φ̇ [m s/rad]: slider set-point per rad/s of tilt rate
   double max_slider = 0.09;    ///< |δ_d| limit [m] of the tracking controller
+  /// The tracking controller's slider loop, in place of PID3: stiff enough (double pole near
+  /// −20 s⁻¹) for the slider to damp the tilt, whose own mode (≈1.7 rad/s) is undamped.
+  PidGains tracking_slider{200.0, 0.0, 20.0};
 };
 
 /// @throw std::invalid_argument naming the first gain that is not finite, PID1's kd != 0
@@ -92,14 +95,17 @@ struct ControlOutput {
 
 /// Both layers over one robot.
 ///
-/// Tracking controller: with the path's speed s_r, heading ψ_r and yaw rate ω_r, and the error
-/// r_d − r split into e_∥ along and e_⊥ across the heading, it commands
-///   v = s_r cos(ψ_r − ψ) + k_x e_∥,  θ̇_d = v / (R cos φ),
-///   ψ̇_d = ω_r + s_r (k_y e_⊥ + k_ψ sin(ψ_r − ψ))         (a unicycle tracking law),
-/// the tilt that gives that yaw rate through eq 6, sin φ_d = −ψ̇_d / θ̇_d, and the slider that
-/// holds that tilt at rest (G3 = 0) plus tilt feedback and damping:
-///   δ_d = −(m_P L cos β / m_Sl) tan φ_d + k_φ (φ − φ_d) + k_φ̇ φ̇,  clipped to ±max_slider.
-/// The cascade below (PID1-3) is the paper's.
+/// Tracking controller (ControllerKind::kTracking): with the path's velocity v_r (speed s_r) and
+/// yaw rate ω_r, and the error r_d − r split into e_∥ along and e_⊥ across the heading, it
+/// commands (a unicycle tracking law)
+///   θ̇_d = (v_r · h + k_x e_∥) / (R cos φ)                       (eq 12 along the heading h)
+///   ψ̇_d = ω_r + k_y s_r e_⊥ + k_ψ (v_r · h⊥)                    (v_r · h⊥ = s_r sin(ψ_r − ψ))
+/// the tilt that gives that yaw rate through eq 6, sin φ_d = −ψ̇_d / θ̇_d (θ̇_d regularised near 0,
+/// φ_d saturated smoothly with tanh), and the slider that holds that tilt at rest (G3 = 0), with
+/// tilt feedback and damping:
+///   δ_d = −(m_P L cos β / m_Sl) tan φ_d + k_φ (φ − φ_d) + k_φ̇ φ̇,  smoothly saturated at max_slider,
+/// tracked by tracking_slider (stiffer than PID3) with the same gravity feed-forward. The
+/// pendulum cascade (PID1, PID2) is the paper's.
 class NormaController {
  public:
   /// @throw std::invalid_argument as validate() for the parameters and gains.

@@ -22,8 +22,8 @@ enum class OdeMethod {
 
 struct OdeOptions {
   OdeMethod method = OdeMethod::kRosenbrock4;
-  double rtol = 1e-6;         ///< relative tolerance (adaptive methods)
-  double atol = 1e-8;         ///< absolute tolerance (adaptive methods)
+  double rtol = 1e-3;         ///< relative tolerance (adaptive methods)
+  double atol = 1e-6;         ///< absolute tolerance (adaptive methods)
   double initial_step = 1e-3; ///< first step [s] of the adaptive methods
   double fixed_step = 1e-3;   ///< step [s] of kFixedRk4
 };

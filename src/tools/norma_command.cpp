@@ -1,0 +1,210 @@
+#include "norma_command.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <ostream>
+#include <vector>
+
+#include "spherical_robots/norma/norma_simulation.hpp"
+
+namespace spherical_robots::sphere_sim {
+namespace {
+
+constexpr double kClosedLoopDuration = 1300.0;  // [s], the paper's run
+constexpr double kClosedLoopLogRate = 1.0;      // [Hz]
+constexpr double kOpenLoopDuration = 5.0;       // [s]
+constexpr double kOpenLoopLogRate = 100.0;      // [Hz]
+
+const char* const kColumns[] = {"t",      "theta",  "alpha",  "phi", "delta", "thetad",
+                                "alphad", "phid",   "deltad", "X",   "Y",     "psi",
+                                "Xd",     "Yd",     "err",    "T",   "F",     "energy"};
+
+Eigen::Vector4d vector4(const std::vector<double>& values) {
+  return Eigen::Vector4d(values[0], values[1], values[2], values[3]);
+}
+
+norma::OdeOptions odeOptionsFrom(const ParsedOptions& options) {
+  norma::OdeOptions ode;
+  ode.rtol = options.number("rtol");
+  ode.atol = options.number("atol");
+  return ode;
+}
+
+norma::LagrangianVariant variantFrom(const ParsedOptions& options) {
+  return options.text("variant") == "appendix" ? norma::LagrangianVariant::kAppendix
+                                               : norma::LagrangianVariant::kText;
+}
+
+void writeCsv(std::ostream& out, const std::vector<norma::NormaSample>& samples) {
+  CsvWriter writer(out, std::vector<std::string>(std::begin(kColumns), std::end(kColumns)));
+  for (const norma::NormaSample& s : samples) {
+    writer.row({s.t, s.q(0), s.q(1), s.q(2), s.q(3), s.qd(0), s.qd(1), s.qd(2), s.qd(3), s.x, s.y,
+                s.psi, s.x_d, s.y_d, s.error, s.torque, s.force, s.energy});
+  }
+}
+
+/// The first logged row at which the slider is off the shaft, which spans ±R about the centre.
+const norma::NormaSample* leftShaft(const norma::NormaParameters& p,
+                                    const std::vector<norma::NormaSample>& samples) {
+  for (const norma::NormaSample& s : samples) {
+    if (std::abs(p.delta0 + s.q(3)) > p.R) return &s;
+  }
+  return nullptr;
+}
+
+int runOpenLoop(const ParsedOptions& options, std::ostream& out) {
+  for (const char* closed_only : {"controller"}) {
+    if (options.given(closed_only)) {
+      throw UsageError(std::string("--") + closed_only + " is for the closed loop, not --open-loop");
+    }
+  }
+  if (!options.given("q0") || !options.given("qd0")) {
+    throw UsageError("--open-loop needs --q0 and --qd0");
+  }
+  norma::OpenLoopConfig config;
+  config.variant = variantFrom(options);
+  config.q0 = vector4(options.numberList("q0", 4));
+  config.qd0 = vector4(options.numberList("qd0", 4));
+  config.duration = options.given("duration") ? options.number("duration") : kOpenLoopDuration;
+  config.log_rate = options.given("log-rate") ? options.number("log-rate") : kOpenLoopLogRate;
+  config.ode = odeOptionsFrom(options);
+  const norma::NormaParameters parameters;
+  const std::vector<norma::NormaSample> samples = norma::runOpenLoop(parameters, config);
+  OutputFile file(options.text("out"));
+  writeCsv(file.stream(), samples);
+  file.commit();
+  if (const norma::NormaSample* off = leftShaft(parameters, samples)) {
+    std::cerr << "warning: the free slider left the shaft (|delta0 + delta| > R) at t = "
+              << formatNumber(off->t) << " s (delta = " << formatNumber(off->q(3))
+              << " m); the paper's model does not stop it\n";
+  }
+  double drift = 0.0;
+  for (const norma::NormaSample& s : samples) {
+    drift = std::max(drift, std::abs(s.energy - samples.front().energy));
+  }
+  out << "open loop, variant " << options.text("variant") << ": " << samples.size()
+      << " rows, energy " << formatNumber(samples.front().energy) << " J at t = 0, max |change| "
+      << formatNumber(drift) << " J\n";
+  return kSuccess;
+}
+
+int runClosedLoop(const ParsedOptions& options, std::ostream& out) {
+  for (const char* open_only : {"q0", "qd0"}) {
+    if (options.given(open_only)) {
+      throw UsageError(std::string("--") + open_only + " is for --open-loop only");
+    }
+  }
+  norma::ClosedLoopConfig config;
+  config.variant = variantFrom(options);
+  config.controller = options.text("controller") == "tracking" ? norma::ControllerKind::kTracking
+                                                                : norma::ControllerKind::kPaper;
+  config.duration = options.given("duration") ? options.number("duration") : kClosedLoopDuration;
+  config.log_rate = options.given("log-rate") ? options.number("log-rate") : kClosedLoopLogRate;
+  config.ode = odeOptionsFrom(options);
+  const std::vector<norma::NormaSample> samples =
+      norma::runClosedLoop(norma::NormaParameters(), config);
+  OutputFile file(options.text("out"));
+  writeCsv(file.stream(), samples);
+  file.commit();
+  // The issue's measure: ‖e‖ over the second half of the run.
+  double sum_sq = 0.0, worst = 0.0, stroke = 0.0;
+  long count = 0;
+  for (const norma::NormaSample& s : samples) {
+    stroke = std::max(stroke, std::abs(s.q(3)));
+    if (s.t < 0.5 * config.duration) continue;
+    sum_sq += s.error * s.error;
+    worst = std::max(worst, s.error);
+    ++count;
+  }
+  out << "controller " << options.text("controller") << ", variant " << options.text("variant")
+      << ": for t >= " << formatNumber(0.5 * config.duration) << " s RMS |e| "
+      << formatNumber(std::sqrt(sum_sq / std::max(count, 1L))) << " m, max |e| "
+      << formatNumber(worst) << " m; max |delta| " << formatNumber(stroke) << " m\n";
+  return kSuccess;
+}
+
+int runNormaCommand(const ParsedOptions& options, std::ostream& out) {
+  return options.flag("open-loop") ? runOpenLoop(options, out) : runClosedLoop(options, out);
+}
+
+const char* const kDescription =
+    R"(Closed loop (default): the path of eq 52, X_d = 2 sin(0.01 t), Y_d = 1.5 sin(0.02 t), from
+X = Y = 0 with all q and q_dot zero, the heading along the desired initial velocity and the
+controller's integrals zero. --controller paper is the published two-layer controller (eqs
+48-51, k1 = 0.1, k2 = -0.1, k3 = 5; PID1 (1,0,0), PID2 (10,7,3), PID3 (15,3,10) with the
+gravity feed-forward g m_Sl sin(phi)); --controller tracking is this project's
+(docs/conventions.md, "Norma controller").
+Open loop (--open-loop): zero inputs from --q0 and --qd0 at X = Y = psi = 0. Nothing stops the
+free slider at the ends of the shaft (a warning on stderr says when a logged row has it off).
+
+The model is M(q) q_ddot + C(q, q_dot) q_dot + G(q) = [0, T, 0, F] from the text's Lagrangian
+(eq 45; --variant appendix drops the sphere's yaw kinetic energy from M11 as A.3 does), with
+section 5's robot: R = 0.2 m, L = 0.15 m, L0 = 0.1 m, delta0 = 0.1 m, m_Sp = 3 kg (shell
+2.5 + shaft 0.5), m_P = m_Sl = 0.5 kg, g = 9.81 m/s^2. It is integrated with Boost.Odeint's
+rosenbrock4 (L-stable, adaptive; the inner pendulum loop's poles are near -130 s^-1) with
+dense output at the log times; the default tolerances keep X, Y within 1 mm of a run at
+rtol = atol = 1e-11 on the paper's scenario.
+
+CSV columns (SI units, radians; one row every 1/log-rate s from t = 0 through the duration
+inclusive):
+  t                          time [s]
+  theta,alpha,phi,delta      q: roll of the shell about the shaft, pendulum relative to the
+                             shell, tilt of the shaft, slider displacement from delta0 [m]
+  thetad,alphad,phid,deltad  q_dot
+  X,Y,psi                    centre of the sphere [m] and heading [rad] (eqs 6, 12)
+  Xd,Yd                      desired point [m] (eq 52); 0 in open loop
+  err                        |(X, Y) - (Xd, Yd)| [m]; 0 in open loop
+  T,F                        pendulum torque [N m] and slider force [N]; 0 in open loop
+  energy                     total mechanical energy [J], zero at rest at q = 0
+Numbers are written in the shortest form that reads back as the same double.
+
+stdout: one line. Closed loop: RMS and max |e| over t >= duration / 2, max |delta|. Open loop:
+the energy at t = 0 and its largest change.
+
+Exit status: 0 success; 2 usage error (unknown option or choice, malformed number, --q0/--qd0
+without --open-loop, --controller with it); 4 invalid input (non-finite or out-of-range number,
+a state that turns non-finite): one-line error on stderr and no output file.
+)";
+
+}  // namespace
+
+Subcommand normaCommand() {
+  const norma::OdeOptions ode;
+  Subcommand command;
+  command.name = "norma";
+  command.summary =
+      "Norma (slider and pendulum): closed loop on the path of eq 52, or open loop.";
+  command.description = kDescription;
+  command.options = {
+      {"controller",
+       "NAME",
+       "Closed-loop controller: paper (eqs 48-51 and Table 1, as published) or tracking.",
+       "paper",
+       false,
+       {"paper", "tracking"}},
+      {"variant",
+       "NAME",
+       "Inertia matrix: text (eq 45) or appendix (A.3-A.21: M11 without the sphere's yaw term).",
+       "text",
+       false,
+       {"text", "appendix"}},
+      {"open-loop", "", "Zero inputs from --q0, --qd0 instead of the closed loop.", "", false, {}},
+      {"q0", "TH,AL,PHI,DELTA", "Open loop: initial theta, alpha, phi [rad], delta [m].", "",
+       false, {}},
+      {"qd0", "THD,ALD,PHID,DELTAD", "Open loop: initial rates [rad/s, m/s].", "", false, {}},
+      {"rtol", "R", "Relative tolerance of the adaptive integrator, > 0.", formatNumber(ode.rtol),
+       false, {}},
+      {"atol", "A", "Absolute tolerance of the adaptive integrator, > 0.", formatNumber(ode.atol),
+       false, {}},
+      {"duration", "SECONDS",
+       "Simulated time [s], >= 0. Default 1300 (closed loop) or 5 (--open-loop).", "", false, {}},
+      {"log-rate", "HZ", "CSV rows per second [Hz], > 0. Default 1 (closed loop) or 100 "
+       "(--open-loop).", "", false, {}},
+      outOption("CSV file to write (columns below)."),
+  };
+  command.run = runNormaCommand;
+  return command;
+}
+
+}  // namespace spherical_robots::sphere_sim

@@ -1,0 +1,191 @@
+// Norma's controllers and runs (Moazami et al. 2019, section 4) against independent truth: the
+// geometry of eqs 48-51 worked by hand, the loop signs read off the model's own accelerations,
+// the PID arithmetic of Fig. 5, the tracking target for the tracking controller, and the
+// integrators against each other and against the logging contract.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "spherical_robots/norma/norma_controller.hpp"
+#include "spherical_robots/norma/norma_dynamics.hpp"
+#include "spherical_robots/norma/norma_simulation.hpp"
+
+namespace {
+
+using namespace spherical_robots::norma;
+
+PathPoint pointAt(double x, double y, double x_dot, double y_dot) {
+  PathPoint p;
+  p.x = x;
+  p.y = y;
+  p.x_dot = x_dot;
+  p.y_dot = y_dot;
+  return p;
+}
+
+// Heading +x, target 1 m straight ahead: e = (−1, 0) points backwards, ζ = π, so δ_d = 0 and
+// the second term of eq 51 is k2 · 1/6 · (−1) = +1/60 rad/s: k2 < 0 speeds up a robot behind.
+TEST(NormaKinematicLayer, SpeedsUpWhenBehind) {
+  const KinematicCommand c = kinematicLayer(KinematicGains(), 0.2, 0.0, 0.0, 0.0,
+                                            pointAt(1.0, 0.0, 0.02, 0.0));
+  EXPECT_NEAR(std::abs(c.zeta), M_PI, 1e-15);
+  EXPECT_NEAR(c.delta_d, 0.0, 1e-15);
+  EXPECT_NEAR(c.error, 1.0, 1e-15);
+  EXPECT_NEAR(c.theta_dot_d, 0.02 / 0.2 + 0.1 / 6.0, 1e-15);
+  // Ahead of the target it slows down.
+  const KinematicCommand ahead = kinematicLayer(KinematicGains(), 0.2, 2.0, 0.0, 0.0,
+                                                pointAt(1.0, 0.0, 0.02, 0.0));
+  EXPECT_NEAR(ahead.theta_dot_d, 0.1 - 0.1 / 6.0, 1e-15);
+}
+
+// Target 2 m to the left: e = (0, −2), ζ = +π/2 from e to the heading, δ_d = k1 · 2/7 > 0, and a
+// slider pushed out by δ > 0 tilts the robot to φ < 0 (static tilt), whose yaw rate −θ̇ S_φ is
+// positive while rolling forward: it turns left, toward the target.
+TEST(NormaKinematicLayer, SteersTowardTarget) {
+  const KinematicCommand c = kinematicLayer(KinematicGains(), 0.2, 0.0, 0.0, 0.0,
+                                            pointAt(0.0, 2.0, 0.0, 0.0));
+  EXPECT_NEAR(c.zeta, M_PI / 2, 1e-15);
+  EXPECT_NEAR(c.delta_d, 0.1 * 2.0 / 7.0, 1e-15);
+  EXPECT_NEAR(c.theta_dot_d, 0.0, 1e-15);
+  const NormaDynamics dynamics{NormaParameters()};
+  const double phi = dynamics.staticTilt(c.delta_d);
+  EXPECT_LT(phi, 0.0);
+  const auto rates = dynamics.planarRates(Vector4(0, 0, phi, c.delta_d), Vector4(1, 0, 0, 0), 0);
+  EXPECT_GT(rates.psi_dot, 0.0);
+  // The mirror image steers right.
+  const KinematicCommand right = kinematicLayer(KinematicGains(), 0.2, 0.0, 0.0, 0.0,
+                                                pointAt(0.0, -2.0, 0.0, 0.0));
+  EXPECT_NEAR(right.delta_d, -c.delta_d, 1e-15);
+}
+
+// The signs the cascade relies on, from the model: T > 0 raises β̈, a hanging pendulum displaced
+// to β > 0 accelerates the roll, F > 0 raises δ̈.
+TEST(NormaController, LoopSignsAreNegativeFeedback) {
+  const NormaDynamics dynamics{NormaParameters()};
+  const Vector4 rest = Vector4::Zero();
+  const Vector4 by_torque = dynamics.acceleration(rest, rest, NormaDynamics::generalizedForces(1, 0));
+  EXPECT_NEAR(by_torque(1) - by_torque(0), 43.42, 0.01);  // (M⁻¹)22 − (M⁻¹)12 at q = 0
+  const Vector4 by_pendulum =
+      dynamics.acceleration(Vector4(0, 0.1, 0, 0), rest, Vector4::Zero());
+  EXPECT_GT(by_pendulum(0), 0.0);
+  const Vector4 by_force = dynamics.acceleration(rest, rest, NormaDynamics::generalizedForces(0, 1));
+  EXPECT_GT(by_force(3), 0.0);
+}
+
+TEST(NormaController, PaperCascadeArithmetic) {
+  const NormaParameters p;
+  const NormaController controller(p, ControllerKind::kPaper);
+  const Vector4 q(0.3, 0.5, 0.1, 0.02), qd(0.2, 0.1, -0.05, 0.01);
+  const Eigen::Vector3d integrals(0.4, -0.2, 0.03);
+  const PathPoint r = pointAt(1.0, 1.0, 0.02, 0.03);
+  const ControlOutput u = controller.compute(q, qd, 0.5, 0.8, 0.7, integrals, r);
+  const KinematicCommand k = kinematicLayer(KinematicGains(), p.R, 0.5, 0.8, 0.7, r);
+  const double beta_d = 1.0 * (k.theta_dot_d - 0.2);  // PID1 (1, 0, 0)
+  EXPECT_NEAR(u.beta_d, beta_d, 1e-15);
+  EXPECT_NEAR(u.torque, 10 * (beta_d - 0.2) + 7 * -0.2 - 3 * (0.1 - 0.2), 1e-14);  // PID2
+  EXPECT_NEAR(u.force, 15 * (k.delta_d - 0.02) + 3 * 0.03 - 10 * 0.01 +
+                           9.81 * 0.5 * std::sin(0.1), 1e-14);  // PID3 + feed-forward
+  EXPECT_NEAR(u.integrand(0), k.theta_dot_d - 0.2, 1e-15);
+  EXPECT_NEAR(u.integrand(1), beta_d - 0.2, 1e-15);
+  EXPECT_NEAR(u.integrand(2), k.delta_d - 0.02, 1e-15);
+}
+
+TEST(NormaController, RejectsInvalidGainsAndInput) {
+  ControllerGains gains;
+  gains.rate.kd = 0.1;
+  EXPECT_THROW(NormaController(NormaParameters(), ControllerKind::kPaper, gains),
+               std::invalid_argument);
+  gains = ControllerGains();
+  gains.kinematic.k3 = 0.0;
+  EXPECT_THROW(NormaController(NormaParameters(), ControllerKind::kPaper, gains),
+               std::invalid_argument);
+  const NormaController controller(NormaParameters(), ControllerKind::kTracking);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(controller.compute(Vector4::Zero(), Vector4::Zero(), nan, 0, 0,
+                                  Eigen::Vector3d::Zero(), PathPoint()),
+               std::invalid_argument);
+}
+
+TEST(NormaSimulation, LissajousPathIsEq52) {
+  for (double t : {0.0, 37.0, 650.0, 1300.0}) {
+    const PathPoint p = lissajousPath(t);
+    EXPECT_NEAR(p.x, 2 * std::sin(0.01 * t), 1e-15);
+    EXPECT_NEAR(p.y, 1.5 * std::sin(0.02 * t), 1e-15);
+    const double h = 1e-4;
+    EXPECT_NEAR(p.x_dot, (lissajousPath(t + h).x - lissajousPath(t - h).x) / (2 * h), 1e-10);
+    EXPECT_NEAR(p.y_dot, (lissajousPath(t + h).y - lissajousPath(t - h).y) / (2 * h), 1e-10);
+    EXPECT_NEAR(p.y_ddot, (lissajousPath(t + h).y_dot - lissajousPath(t - h).y_dot) / (2 * h),
+                1e-10);
+  }
+}
+
+TEST(NormaSimulation, LogsFromZeroThroughDurationInclusive) {
+  OpenLoopConfig config;
+  config.duration = 0.25;
+  config.log_rate = 10.0;
+  const auto samples = runOpenLoop(NormaParameters(), config);
+  ASSERT_EQ(samples.size(), 4u);
+  EXPECT_EQ(samples[0].t, 0.0);
+  EXPECT_NEAR(samples[2].t, 0.2, 1e-15);
+  EXPECT_EQ(samples[3].t, 0.25);
+  config.duration = -1.0;
+  EXPECT_THROW(runOpenLoop(NormaParameters(), config), std::invalid_argument);
+}
+
+// The three methods agree on a swinging, tilting, rolling robot.
+TEST(NormaSimulation, MethodsAgree) {
+  OpenLoopConfig config;
+  config.q0 = Vector4(0.0, 0.5, 0.2, 0.0);
+  config.qd0 = Vector4(0.5, 0.0, 0.0, 0.0);
+  config.slider_stiffness = 20.0;
+  config.duration = 3.0;
+  config.log_rate = 1.0;
+  config.ode.rtol = config.ode.atol = 1e-11;
+  config.ode.method = OdeMethod::kDopri5;
+  const NormaSample reference = runOpenLoop(NormaParameters(), config).back();
+  config.ode.method = OdeMethod::kRosenbrock4;
+  config.ode.rtol = config.ode.atol = 1e-9;
+  const NormaSample stiff = runOpenLoop(NormaParameters(), config).back();
+  config.ode.method = OdeMethod::kFixedRk4;
+  config.ode.fixed_step = 1e-3;
+  const NormaSample fixed = runOpenLoop(NormaParameters(), config).back();
+  EXPECT_LT((stiff.q - reference.q).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_LT((fixed.q - reference.q).cwiseAbs().maxCoeff(), 1e-8);
+  EXPECT_NEAR(stiff.x, reference.x, 1e-6);
+  EXPECT_NEAR(fixed.y, reference.y, 1e-8);
+  EXPECT_GT(std::abs(reference.q(0)), 0.1);
+}
+
+// The target for the tracking controller on eq 52: over t >= 650 s, RMS ‖e‖ < 0.10 m and
+// max ‖e‖ < 0.30 m, with the slider within ±0.1 m (the stroke R − δ0 each way).
+TEST(NormaSimulation, TrackingControllerMeetsTarget) {
+  ClosedLoopConfig config;
+  config.controller = ControllerKind::kTracking;
+  const auto samples = runClosedLoop(NormaParameters(), config);
+  ASSERT_EQ(samples.size(), 1301u);
+  double sum_sq = 0.0, worst = 0.0, stroke = 0.0;
+  int count = 0;
+  for (const NormaSample& s : samples) {
+    stroke = std::max(stroke, std::abs(s.q(3)));
+    if (s.t < 650.0) continue;
+    // ‖e‖ recomputed from the logged position and eq 52.
+    const double e = std::hypot(s.x - 2 * std::sin(0.01 * s.t), s.y - 1.5 * std::sin(0.02 * s.t));
+    sum_sq += e * e;
+    worst = std::max(worst, e);
+    ++count;
+  }
+  EXPECT_LT(std::sqrt(sum_sq / count), 0.10);
+  EXPECT_LT(worst, 0.30);
+  EXPECT_LE(stroke, 0.1);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}

@@ -1,0 +1,206 @@
+// `sphere_sim norma` run as an executable, checked against independent truth: the path of eq 52
+// and its error, the initial heading and the cascade's first output worked by hand, energy
+// conservation of the unforced robot, the closed-form energy difference of the two variants,
+// the logging contract, the slider warning and the exit statuses (DESIGN.md, "sphere_sim").
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<std::string> kColumns = {
+    "t",   "theta", "alpha", "phi", "delta", "thetad", "alphad", "phid", "deltad",
+    "X",   "Y",     "psi",   "Xd",  "Yd",    "err",    "T",      "F",    "energy"};
+
+std::string readFile(const fs::path& path) {
+  std::ifstream file(path);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+
+  double at(std::size_t row, const std::string& column) const {
+    for (std::size_t i = 0; i < header.size(); ++i) {
+      if (header[i] == column) return rows.at(row).at(i);
+    }
+    ADD_FAILURE() << "no column " << column;
+    return 0.0;
+  }
+};
+
+class SphereSimNormaTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string pattern = (fs::temp_directory_path() / "sphere_sim_norma.XXXXXX").string();
+    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+    dir_ = pattern;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  /// `sphere_sim norma ARGS --out DIR/run.csv`; the CSV read back if it was written.
+  Result norma(const std::string& args) const {
+    const fs::path csv = dir_ / "run.csv";
+    const std::string command = std::string("'") + SPHERE_SIM_EXECUTABLE + "' norma " + args +
+                                " --out '" + csv.string() + "' > '" + (dir_ / "out").string() +
+                                "' 2> '" + (dir_ / "err").string() + "'";
+    Result r;
+    const int raw = std::system(command.c_str());
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = readFile(dir_ / "out");
+    r.err = readFile(dir_ / "err");
+    std::ifstream file(csv);
+    std::string line;
+    if (std::getline(file, line)) {
+      std::istringstream cells(line);
+      for (std::string cell; std::getline(cells, cell, ',');) r.header.push_back(cell);
+      while (std::getline(file, line)) {
+        std::istringstream values(line);
+        std::vector<double> row;
+        for (std::string cell; std::getline(values, cell, ',');) {
+          char* end = nullptr;
+          row.push_back(std::strtod(cell.c_str(), &end));
+          EXPECT_TRUE(!cell.empty() && *end == '\0' && std::isfinite(row.back())) << cell;
+        }
+        EXPECT_EQ(row.size(), r.header.size());
+        r.rows.push_back(row);
+      }
+    }
+    return r;
+  }
+
+  bool csvWritten() const { return fs::exists(dir_ / "run.csv"); }
+
+  fs::path dir_;
+};
+
+TEST_F(SphereSimNormaTest, PaperClosedLoopRowsFollowEq52) {
+  const Result r = norma("--duration 20 --log-rate 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.header, kColumns);
+  ASSERT_EQ(r.rows.size(), 41u);
+  for (std::size_t i = 0; i < r.rows.size(); ++i) {
+    const double t = r.at(i, "t");
+    EXPECT_NEAR(t, 0.5 * i, 1e-12);
+    EXPECT_NEAR(r.at(i, "Xd"), 2 * std::sin(0.01 * t), 1e-12);
+    EXPECT_NEAR(r.at(i, "Yd"), 1.5 * std::sin(0.02 * t), 1e-12);
+    EXPECT_NEAR(r.at(i, "err"),
+                std::hypot(r.at(i, "X") - r.at(i, "Xd"), r.at(i, "Y") - r.at(i, "Yd")), 1e-12);
+  }
+  // t = 0: at rest on the path, heading along (0.02, 0.03) m/s; θ̇_d = |v_d| / R (eq 51), and
+  // T = PID2 kp · PID1 kp · θ̇_d = 10 · sqrt(0.0013) / 0.2.
+  for (const char* zero : {"theta", "alpha", "phi", "delta", "thetad", "X", "Y", "err", "F"}) {
+    EXPECT_EQ(r.at(0, zero), 0.0) << zero;
+  }
+  EXPECT_NEAR(r.at(0, "psi"), std::atan2(0.03, 0.02), 1e-15);
+  EXPECT_NEAR(r.at(0, "T"), 10.0 * std::sqrt(0.0013) / 0.2, 1e-12);
+  // It rolls forward along the path.
+  EXPECT_GT(r.at(40, "X"), 0.3);
+  EXPECT_GT(r.at(40, "Y"), 0.4);
+  EXPECT_NE(r.out.find("RMS |e|"), std::string::npos) << r.out;
+}
+
+// Unforced, the total energy is conserved at tight tolerances; the closed-loop columns hold 0.
+TEST_F(SphereSimNormaTest, OpenLoopConservesEnergy) {
+  const Result r = norma(
+      "--open-loop --q0 0,0.6,-0.1,0.02 --qd0 1,0,0.3,0 --duration 0.3 --log-rate 10 "
+      "--rtol 1e-11 --atol 1e-12");
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(r.rows.size(), 4u);
+  const double e0 = r.at(0, "energy");
+  ASSERT_GT(e0, 0.1);
+  for (std::size_t i = 0; i < r.rows.size(); ++i) {
+    EXPECT_NEAR(r.at(i, "energy"), e0, 1e-9 * e0);
+    for (const char* zero : {"Xd", "Yd", "err", "T", "F"}) EXPECT_EQ(r.at(i, zero), 0.0);
+  }
+  EXPECT_NE(r.at(3, "theta"), 0.0);
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+}
+
+// The appendix's M11 lacks ½ I_Sp^z (θ̇ S_φ)², I_Sp^z = I_Shl + I_Shf^x C_φ² (eqs 37-40):
+// with θ̇ = 1, φ = −0.5 the energies at t = 0 differ by exactly that.
+TEST_F(SphereSimNormaTest, VariantsDifferBySphereYawEnergy) {
+  const std::string args = "--open-loop --q0 0,0.2,-0.5,0 --qd0 1,0,0,0 --duration 0";
+  const Result text = norma(args + " --variant text");
+  const Result appendix = norma(args + " --variant appendix");
+  ASSERT_EQ(text.status, 0) << text.err;
+  ASSERT_EQ(appendix.status, 0) << appendix.err;
+  ASSERT_EQ(text.rows.size(), 1u);
+  const double i_z = 2.0 / 3.0 * 2.5 * 0.04 + 1.0 / 3.0 * 0.5 * 0.04 * std::pow(std::cos(0.5), 2);
+  EXPECT_NEAR(text.at(0, "energy") - appendix.at(0, "energy"),
+              0.5 * i_z * std::pow(std::sin(0.5), 2), 1e-15);
+}
+
+// The free slider runs off the shaft (|δ0 + δ| > R): one warning, and the run completes.
+TEST_F(SphereSimNormaTest, WarnsOnceWhenSliderLeavesShaft) {
+  const Result r = norma("--open-loop --q0 0,0.6,-0.1,0.02 --qd0 1,0,0,0 --duration 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.rows.size(), 201u);
+  std::size_t warnings = 0;
+  for (std::size_t at = r.err.find("warning"); at != std::string::npos;
+       at = r.err.find("warning", at + 1)) {
+    ++warnings;
+  }
+  EXPECT_EQ(warnings, 1u) << r.err;
+  double beyond = 0.0;
+  for (std::size_t i = 0; i < r.rows.size(); ++i) {
+    beyond = std::max(beyond, std::abs(0.1 + r.at(i, "delta")) - 0.2);
+  }
+  EXPECT_GT(beyond, 0.0);
+}
+
+TEST_F(SphereSimNormaTest, BadInputExitsWithoutOutput) {
+  const std::vector<std::pair<std::string, int>> cases = {
+      {"--q0 0,0,0,0", 2},                                     // closed loop takes no state
+      {"--open-loop --q0 0,0,0,0", 2},                         // --qd0 missing
+      {"--open-loop --q0 0,0,0 --qd0 0,0,0,0", 2},             // three values
+      {"--open-loop --q0 0,0,0,0 --qd0 0,0,0,0 --controller paper", 2},
+      {"--controller pid", 2},
+      {"--variant book", 2},
+      {"--rtol x", 2},
+      {"--rtol -1e-6", 4},
+      {"--atol 0", 4},
+      {"--duration -1", 4},
+      {"--log-rate 0", 4},
+      {"--open-loop --q0 0,nan,0,0 --qd0 0,0,0,0", 4},
+      {"--open-loop --q0 0,0,0,0 --qd0 inf,0,0,0", 4},
+  };
+  for (const auto& [args, status] : cases) {
+    const Result r = norma(args);
+    EXPECT_EQ(r.status, status) << args << ": " << r.err;
+    EXPECT_FALSE(r.err.empty()) << args;
+    EXPECT_FALSE(csvWritten()) << args;
+  }
+}
+
+TEST_F(SphereSimNormaTest, HelpNamesColumnsAndDefaults) {
+  const Result r = norma("--help");
+  EXPECT_EQ(r.status, 0);
+  for (const std::string& column : kColumns) {
+    EXPECT_NE(r.out.find(column), std::string::npos) << column;
+  }
+  EXPECT_NE(r.out.find("0.001"), std::string::npos);  // --rtol default
+  EXPECT_NE(r.out.find("1e-06"), std::string::npos);  // --atol default
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
