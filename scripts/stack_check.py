@@ -440,13 +440,14 @@ class NormaCheck(StackFixture):
     def test_02_joint_states_and_tf(self):
         wait_until(lambda: self.joint_states.count() > 0, 'joint_states')
         msg = self.joint_states.last()
-        self.assertEqual(list(msg.name), ['shaft_tilt', 'shell_roll', 'pendulum', 'slider'])
+        self.assertEqual(list(msg.name),
+                         ['tilt_joint', 'shell_joint', 'pendulum_joint', 'slider_joint'])
         state = self.norma_states.last()
-        # The pendulum's joint is beta = alpha - theta (urdf/norma.urdf); at most one 20 ms
-        # publishing period apart from the last state.
-        self.assertAlmostEqual(msg.position[2], state.q[1] - state.q[0],
-                               delta=0.05)
-        for child in ('base_link', 'shaft', 'shell', 'pendulum', 'slider'):
+        # phi, theta, alpha, delta (urdf/norma.urdf), at most one 20 ms publishing period apart
+        # from the last state.
+        for joint, coordinate in zip((0, 1, 2, 3), (2, 0, 1, 3)):
+            self.assertAlmostEqual(msg.position[joint], state.q[coordinate], delta=0.05)
+        for child in ('base_link', 'tilt_link', 'shell_link', 'pendulum_link', 'slider_link'):
             transform = self.tf_buffer.lookup_transform('world', self.prefix + child,
                                                         rospy.Time(0), rospy.Duration(10.0))
             t = transform.transform.translation

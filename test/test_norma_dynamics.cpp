@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "spherical_robots/config/norma_description.hpp"
+#include "spherical_robots/config/robot_description.hpp"
 #include "spherical_robots/norma/norma_dynamics.hpp"
 #include "spherical_robots/norma/norma_simulation.hpp"
 
@@ -310,6 +312,35 @@ TEST(NormaDynamics, RejectsInvalidInput) {
   EXPECT_THROW(dynamics.massMatrix(Vector4(0, nan, 0, 0)), std::invalid_argument);
   EXPECT_THROW(dynamics.terms(Vector4::Zero(), Vector4(0, 0, 0, nan)), std::invalid_argument);
   EXPECT_THROW(NormaDynamics::generalizedForces(nan, 0.0), std::invalid_argument);
+}
+
+// The shipped URDF is section 5's robot, and eq 1 (m_P L0 = m_Sl δ0) holds for it.
+TEST(NormaDescription, ShippedUrdfIsSection5Robot) {
+  namespace config = spherical_robots::config;
+  const std::string xml =
+      config::readTextFile(std::string(SPHERICAL_ROBOTS_SOURCE_DIR) + "/urdf/norma.urdf");
+  const NormaParameters p = config::normaParametersFromUrdf(xml);
+  EXPECT_DOUBLE_EQ(p.R, 0.2);
+  EXPECT_DOUBLE_EQ(p.L, 0.15);
+  EXPECT_DOUBLE_EQ(p.L0, 0.10);
+  EXPECT_DOUBLE_EQ(p.delta0, 0.1);
+  EXPECT_DOUBLE_EQ(p.m_shell + p.m_shaft, 3.0);
+  EXPECT_DOUBLE_EQ(p.m_shaft, 0.5);
+  EXPECT_DOUBLE_EQ(p.m_pendulum, 0.5);
+  EXPECT_DOUBLE_EQ(p.m_slider, 0.5);
+  EXPECT_NEAR(p.m_pendulum * p.L0, p.m_slider * p.delta0, 1e-15);
+  // A pendulum axis turned round contradicts the conventions; a missing link is named.
+  std::string flipped = xml;
+  flipped.replace(flipped.find("<axis xyz=\"0 -1 0\"/>"), 21, "<axis xyz=\"0 1 0\"/>");
+  EXPECT_THROW(config::normaParametersFromUrdf(flipped), std::invalid_argument);
+  std::string no_slider = xml;
+  no_slider.replace(no_slider.find("name=\"slider_joint\""), 19, "name=\"other_joint\"");
+  try {
+    config::normaParametersFromUrdf(no_slider);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("slider_joint"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

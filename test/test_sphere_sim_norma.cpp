@@ -53,11 +53,14 @@ class SphereSimNormaTest : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  /// `sphere_sim norma ARGS --out DIR/run.csv`; the CSV read back if it was written.
-  Result norma(const std::string& args) const {
+  /// `sphere_sim norma ARGS --config CONFIG --out DIR/run.csv` (default: the source tree's
+  /// urdf/); the CSV read back if it was written.
+  Result norma(const std::string& args,
+               const std::string& config = SPHERICAL_ROBOTS_SOURCE_DIR) const {
     const fs::path csv = dir_ / "run.csv";
     const std::string command = std::string("'") + SPHERE_SIM_EXECUTABLE + "' norma " + args +
-                                " --out '" + csv.string() + "' > '" + (dir_ / "out").string() +
+                                " --config '" + config + "' --out '" + csv.string() + "' > '" +
+                                (dir_ / "out").string() +
                                 "' 2> '" + (dir_ / "err").string() + "'";
     Result r;
     const int raw = std::system(command.c_str());
@@ -186,6 +189,32 @@ TEST_F(SphereSimNormaTest, BadInputExitsWithoutOutput) {
     EXPECT_FALSE(r.err.empty()) << args;
     EXPECT_FALSE(csvWritten()) << args;
   }
+}
+
+// The robot comes from DIR/urdf/norma.urdf: a longer pendulum (L = 0.3 m) changes the energy
+// of a swinging pendulum by exactly what eq 20 says, m_P g (L − L') C_β at rest.
+TEST_F(SphereSimNormaTest, ReadsRobotFromUrdf) {
+  const fs::path config = dir_ / "config_dir";
+  fs::create_directories(config / "urdf");
+  fs::create_directories(config / "config");
+  std::string xml = readFile(fs::path(SPHERICAL_ROBOTS_SOURCE_DIR) / "urdf" / "norma.urdf");
+  xml.replace(xml.find("<origin xyz=\"0 0 -0.15\"/>\n      <mass"), 25,
+              "<origin xyz=\"0 0 -0.30\"/>");
+  std::ofstream(config / "urdf" / "norma.urdf") << xml;
+  const std::string args = "--open-loop --q0 0,0.5,0,0 --qd0 0,0,0,0 --duration 0";
+  const Result shipped = norma(args);
+  const Result longer = norma(args, config.string());
+  ASSERT_EQ(shipped.status, 0) << shipped.err;
+  ASSERT_EQ(longer.status, 0) << longer.err;
+  // E^p shifted to 0 at q = 0: m_P g L (1 − C_β).
+  EXPECT_NEAR(shipped.at(0, "energy"), 0.5 * 9.81 * 0.15 * (1 - std::cos(0.5)), 1e-14);
+  EXPECT_NEAR(longer.at(0, "energy"), 0.5 * 9.81 * 0.30 * (1 - std::cos(0.5)), 1e-14);
+  fs::remove(config / "urdf" / "norma.urdf");
+  fs::remove(dir_ / "run.csv");
+  const Result missing = norma(args, config.string());
+  EXPECT_EQ(missing.status, 4);
+  EXPECT_NE(missing.err.find("norma.urdf"), std::string::npos) << missing.err;
+  EXPECT_FALSE(csvWritten());
 }
 
 TEST_F(SphereSimNormaTest, HelpNamesColumnsAndDefaults) {

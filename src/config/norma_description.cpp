@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <urdf_parser/urdf_parser.h>
 
 #include "spherical_robots/config/robot_description.hpp"
@@ -15,20 +16,25 @@ urdf::LinkConstSharedPtr requireLink(const urdf::ModelInterface& model, const st
   return link;
 }
 
-double mass(const urdf::ModelInterface& model, const std::string& link_name) {
-  const urdf::LinkConstSharedPtr link = requireLink(model, link_name);
-  if (!link->inertial)
-    throw std::invalid_argument("Norma URDF: link '" + link_name + "' has no <inertial>");
-  return link->inertial->mass;
-}
-
-double length(const urdf::Vector3& v) { return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
-
-/// The distance [m] of joint `name` from its parent link's origin.
-double jointDistance(const urdf::ModelInterface& model, const std::string& name) {
+urdf::JointConstSharedPtr requireJoint(const urdf::ModelInterface& model, const std::string& name,
+                                       double ax, double ay, double az) {
   const urdf::JointConstSharedPtr joint = model.getJoint(name);
   if (!joint) throw std::invalid_argument("Norma URDF: no joint '" + name + "'");
-  return length(joint->parent_to_joint_origin_transform.position);
+  const urdf::Vector3& a = joint->axis;
+  if (std::abs(a.x - ax) > 1e-9 || std::abs(a.y - ay) > 1e-9 || std::abs(a.z - az) > 1e-9) {
+    throw std::invalid_argument("Norma URDF: joint '" + name + "' has axis (" +
+                                std::to_string(a.x) + ", " + std::to_string(a.y) + ", " +
+                                std::to_string(a.z) + "), expected (" + std::to_string(ax) +
+                                ", " + std::to_string(ay) + ", " + std::to_string(az) + ")");
+  }
+  return joint;
+}
+
+urdf::InertialSharedPtr requireInertial(const urdf::ModelInterface& model,
+                                        const std::string& name) {
+  const urdf::LinkConstSharedPtr link = requireLink(model, name);
+  if (!link->inertial) throw std::invalid_argument("Norma URDF: link '" + name + "' has no inertial");
+  return link->inertial;
 }
 
 }  // namespace
@@ -36,18 +42,22 @@ double jointDistance(const urdf::ModelInterface& model, const std::string& name)
 norma::NormaParameters normaParametersFromUrdf(const std::string& urdf_xml) {
   const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf_xml);
   if (!model) throw std::invalid_argument("Norma URDF: the XML does not parse");
-  norma::NormaParameters parameters;
-  parameters.R = sphereRadiusFromUrdf(urdf_xml, "shell");
-  parameters.m_shell = mass(*model, "shell");
-  parameters.m_shaft = mass(*model, "shaft");
-  parameters.m_pendulum = mass(*model, "pendulum");
-  parameters.m_slider = mass(*model, "slider");
-  const urdf::LinkConstSharedPtr pendulum = requireLink(*model, "pendulum");
-  parameters.L = length(pendulum->inertial->origin.position);
-  parameters.L0 = jointDistance(*model, "pendulum");
-  parameters.delta0 = jointDistance(*model, "slider");
-  norma::validate(parameters);  // names the parameter that is not finite and > 0
-  return parameters;
+  requireJoint(*model, "tilt_joint", 1, 0, 0);
+  requireJoint(*model, "shell_joint", 0, 1, 0);
+  const auto pendulum_joint = requireJoint(*model, "pendulum_joint", 0, -1, 0);
+  const auto slider_joint = requireJoint(*model, "slider_joint", 0, 1, 0);
+  norma::NormaParameters p;
+  p.R = sphereRadiusFromUrdf(urdf_xml, "shell_link");
+  p.m_shell = requireInertial(*model, "shell_link")->mass;
+  p.m_shaft = requireInertial(*model, "shaft_link")->mass;
+  const urdf::InertialSharedPtr pendulum = requireInertial(*model, "pendulum_link");
+  p.m_pendulum = pendulum->mass;
+  p.L = -pendulum->origin.position.z;
+  p.L0 = -pendulum_joint->parent_to_joint_origin_transform.position.y;
+  p.m_slider = requireInertial(*model, "slider_link")->mass;
+  p.delta0 = slider_joint->parent_to_joint_origin_transform.position.y;
+  norma::validate(p);  // names the first value that is not finite and > 0
+  return p;
 }
 
 }  // namespace spherical_robots::config

@@ -16,7 +16,8 @@ namespace {
 
 const std::string kWorldFrame = "world";
 const std::vector<std::string> kActuators = {"pendulum_motor", "slider_motor"};
-const std::vector<std::string> kJoints = {"shaft_tilt", "shell_roll", "pendulum", "slider"};
+const std::vector<std::string> kJoints = {"tilt_joint", "shell_joint", "pendulum_joint",
+                                          "slider_joint"};
 constexpr std::size_t kMaxTrailPoints = 4000;
 
 norma::LagrangianVariant variantFromString(const std::string& name) {
@@ -136,14 +137,14 @@ void NormaPlantRos::publishPose(const ros::Time& now) {
                                             now));
   tf_broadcaster_.sendTransform(
       conversions::toTransform(centre, heading, kWorldFrame, base_frame_, now));
-  // URDF joints (urdf/norma.urdf): the pendulum's joint angle is beta = alpha - theta.
+  // URDF joints (urdf/norma.urdf): phi, theta, alpha (relative to the shell), delta.
   const norma::Vector4& q = state_.q;
   const norma::Vector4& qd = state_.qd;
   sensor_msgs::JointState joints;
   joints.header.stamp = now;
   joints.name = kJoints;
-  joints.position = {q(2), q(0), q(1) - q(0), q(3)};
-  joints.velocity = {qd(2), qd(0), qd(1) - qd(0), qd(3)};
+  joints.position = {q(2), q(0), q(1), q(3)};
+  joints.velocity = {qd(2), qd(0), qd(1), qd(3)};
   joint_pub_.publish(joints);
 
   if (periodDue(last_trail_, now, trail_period_)) {

@@ -6,6 +6,8 @@
 #include <ostream>
 #include <vector>
 
+#include "spherical_robots/config/norma_description.hpp"
+#include "spherical_robots/config/robot_description.hpp"
 #include "spherical_robots/norma/norma_simulation.hpp"
 
 namespace spherical_robots::sphere_sim {
@@ -22,6 +24,17 @@ const char* const kColumns[] = {"t",      "theta",  "alpha",  "phi", "delta", "t
 
 Eigen::Vector4d vector4(const std::vector<double>& values) {
   return Eigen::Vector4d(values[0], values[1], values[2], values[3]);
+}
+
+/// The robot of DIR/urdf/norma.urdf.
+norma::NormaParameters parametersFrom(const ParsedOptions& options) {
+  const std::string path = configDirectory(options) + "/urdf/norma.urdf";
+  const std::string xml = config::readTextFile(path);  // its error names the path
+  try {
+    return config::normaParametersFromUrdf(xml);
+  } catch (const std::invalid_argument& error) {
+    throw InvalidInput(path + ": " + error.what());
+  }
 }
 
 norma::OdeOptions odeOptionsFrom(const ParsedOptions& options) {
@@ -69,7 +82,7 @@ int runOpenLoop(const ParsedOptions& options, std::ostream& out) {
   config.duration = options.given("duration") ? options.number("duration") : kOpenLoopDuration;
   config.log_rate = options.given("log-rate") ? options.number("log-rate") : kOpenLoopLogRate;
   config.ode = odeOptionsFrom(options);
-  const norma::NormaParameters parameters;
+  const norma::NormaParameters parameters = parametersFrom(options);
   const std::vector<norma::NormaSample> samples = norma::runOpenLoop(parameters, config);
   OutputFile file(options.text("out"));
   writeCsv(file.stream(), samples);
@@ -103,7 +116,7 @@ int runClosedLoop(const ParsedOptions& options, std::ostream& out) {
   config.log_rate = options.given("log-rate") ? options.number("log-rate") : kClosedLoopLogRate;
   config.ode = odeOptionsFrom(options);
   const std::vector<norma::NormaSample> samples =
-      norma::runClosedLoop(norma::NormaParameters(), config);
+      norma::runClosedLoop(parametersFrom(options), config);
   OutputFile file(options.text("out"));
   writeCsv(file.stream(), samples);
   file.commit();
@@ -139,9 +152,10 @@ Open loop (--open-loop): zero inputs from --q0 and --qd0 at X = Y = psi = 0. Not
 free slider at the ends of the shaft (a warning on stderr says when a logged row has it off).
 
 The model is M(q) q_ddot + C(q, q_dot) q_dot + G(q) = [0, T, 0, F] from the text's Lagrangian
-(eq 45; --variant appendix drops the sphere's yaw kinetic energy from M11 as A.3 does), with
-section 5's robot: R = 0.2 m, L = 0.15 m, L0 = 0.1 m, delta0 = 0.1 m, m_Sp = 3 kg (shell
-2.5 + shaft 0.5), m_P = m_Sl = 0.5 kg, g = 9.81 m/s^2. It is integrated with Boost.Odeint's
+(eq 45; --variant appendix drops the sphere's yaw kinetic energy from M11 as A.3 does). The
+robot's masses and lengths are read from DIR/urdf/norma.urdf (shipped: section 5's robot,
+R = 0.2 m, L = 0.15 m, L0 = 0.1 m, delta0 = 0.1 m, m_Sp = 3 kg = shell 2.5 + shaft 0.5,
+m_P = m_Sl = 0.5 kg); g = 9.81 m/s^2. It is integrated with Boost.Odeint's
 rosenbrock4 (L-stable, adaptive; the inner pendulum loop's poles are near -130 s^-1) with
 dense output at the log times; the default tolerances keep X, Y within 1 mm of a run at
 rtol = atol = 1e-11 on the paper's scenario.
@@ -164,7 +178,7 @@ the energy at t = 0 and its largest change.
 
 Exit status: 0 success; 2 usage error (unknown option or choice, malformed number, --q0/--qd0
 without --open-loop, --controller with it); 4 invalid input (non-finite or out-of-range number,
-a state that turns non-finite): one-line error on stderr and no output file.
+an unreadable or inconsistent URDF, a state that turns non-finite): one-line error on stderr and no output file.
 )";
 
 }  // namespace
@@ -201,6 +215,7 @@ Subcommand normaCommand() {
        "Simulated time [s], >= 0. Default 1300 (closed loop) or 5 (--open-loop).", "", false, {}},
       {"log-rate", "HZ", "CSV rows per second [Hz], > 0. Default 1 (closed loop) or 100 "
        "(--open-loop).", "", false, {}},
+      configOption(),
       outOption("CSV file to write (columns below)."),
   };
   command.run = runNormaCommand;

@@ -1,6 +1,6 @@
 #pragma once
-// Norma's masses and lengths from its URDF (urdf/norma.urdf, urdfdom), the one source of truth
-// for the plant, the controller, sphere_sim and rviz.
+// Norma's masses and lengths read from its URDF (urdf/norma.urdf), the one source of truth for
+// rviz and the model (urdfdom).
 
 #include <string>
 
@@ -8,12 +8,13 @@
 
 namespace spherical_robots::config {
 
-/// R: the radius of link `shell`'s collision sphere; m_shell, m_shaft, m_pendulum, m_slider: the
-/// masses of links shell, shaft, pendulum, slider; L: the distance of the pendulum's inertial
-/// origin (its bob) from joint `pendulum`; L0: that joint's distance from the centre; δ0: joint
-/// `slider`'s distance from the centre. g stays 9.81 m/s².
-/// @throw std::invalid_argument naming the link or joint that is missing or malformed, or the
-///        parameter that is not finite and > 0.
+/// R from shell_link's sphere; m_shell, m_shaft, m_pendulum, m_slider from the inertial masses of
+/// shell_link, shaft_link, pendulum_link, slider_link; L0 = −y of pendulum_joint's origin; L = −z
+/// of pendulum_link's inertial origin; delta0 = y of slider_joint's origin. g keeps its default.
+/// The joints must have the axes of docs/conventions.md ("Norma"): tilt_joint +x, shell_joint
+/// +y, pendulum_joint −y, slider_joint +y.
+/// @throw std::invalid_argument if the XML does not parse, a link, joint or inertial is missing,
+///        an axis differs, or a value is not finite and > 0 (naming it).
 norma::NormaParameters normaParametersFromUrdf(const std::string& urdf_xml);
 
 }  // namespace spherical_robots::config

@@ -25,7 +25,8 @@ namespace spherical_robots {
 /// (0.05): older measured efforts count as zero; initial_psi [rad] (0).
 /// In the node handle's namespace: robot_description (urdf/norma.urdf: masses and lengths).
 /// Subscribes actuators/state (efforts of pendulum_motor [N m] and slider_motor [N]). Publishes
-/// norma_state (every tick), odom, joint_states (shaft_tilt, shell_roll, pendulum, slider),
+/// norma_state (every tick), odom, joint_states (tilt_joint φ, shell_joint θ, pendulum_joint α,
+/// slider_joint δ of urdf/norma.urdf),
 /// tf world -> <prefix>base_link (centre, heading), trail and /diagnostics.
 class NormaPlantRos {
  public:
