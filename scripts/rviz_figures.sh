@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# The rviz figures of docs/results.md and the README: records each stack's run (through
+# launch/record.launch) and screenshots the replayed bag (scripts/rviz_screenshot.sh) late in the
+# run, when the trail shows the approach:
+#
+#   scripts/rviz_figures.sh [OUT_DIR]     (default docs/figures; about 3.5 min)
+#
+#   terrain_rviz_3R_circle.png    terrain stack, 3R robot, circle path, at t = 150 s
+#   terrain_rviz_RS_diamond.png   terrain stack, RS robot, diamond path, at t = 150 s
+#   roller_rviz_circle.png        roller stack, circle, at t = 60 s
+#   norma_rviz_paper.png          Norma stack, paper controller, at t = 55 s (real time)
+# Needs the built package. Each run gets its own ROS master on a free port.
+set -euo pipefail
+. "$(dirname "${BASH_SOURCE[0]}")/env.sh"
+out_dir=$(realpath -m "${1:-$SR_ROOT/docs/figures}")
+rospack find spherical_robots > /dev/null 2>&1 || sr_source_workspace
+mkdir -p "$out_dir"
+work=$(mktemp -d /tmp/rviz_figures.XXXXXX)
+trap 'rm -rf "$work"' EXIT
+
+# record STACK NAME AT DURATION LAUNCH_ARGS...: records a run and screenshots it at bag time AT.
+record() {
+  local stack=$1 name=$2 at=$3 duration=$4 bag=$work/$2.bag port
+  shift 4
+  port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("", 0)); print(s.getsockname()[1]); s.close()')
+  sr_log "recording $name ($duration s)"
+  ROS_HOME=$work/ros_home ROS_HOSTNAME=127.0.0.1 ROS_MASTER_URI=http://127.0.0.1:$port/ \
+    timeout $((duration + 120)) roslaunch -p "$port" spherical_robots "${stack}_stack.launch" "$@" \
+    duration:="$duration" record:="$bag" > "$work/roslaunch.log" 2>&1 \
+    || { tail -20 "$work/roslaunch.log"; sr_log "FAILED: recording $name"; exit 1; }
+  STACK=$stack "$SR_ROOT/scripts/rviz_screenshot.sh" "$bag" "$out_dir/$name.png" "$at"
+}
+
+record terrain terrain_rviz_3R_circle 150 160 robot:=3R path:=circle
+record terrain terrain_rviz_RS_diamond 150 160 robot:=RS path:=diamond
+record roller roller_rviz_circle 60 100 path:=circle
+record norma norma_rviz_paper 55 60 controller:=paper speedup:=1
