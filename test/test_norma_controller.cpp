@@ -160,33 +160,6 @@ TEST(NormaSimulation, MethodsAgree) {
   EXPECT_GT(std::abs(reference.q(0)), 0.1);
 }
 
-// The fixed-step plant (zero-order-hold inputs) against the adaptive open loop: with U = 0 and
-// 1 ms steps it lands on a tight dopri5 run.
-TEST(NormaSimulation, FixedStepPlantMatchesAdaptiveRun) {
-  const NormaParameters p;
-  OpenLoopConfig config;
-  config.q0 = Vector4(0.0, 0.5, 0.2, 0.0);
-  config.qd0 = Vector4(0.5, 0.0, 0.1, 0.05);
-  config.duration = 1.0;
-  config.log_rate = 1.0;
-  config.ode.method = OdeMethod::kDopri5;
-  config.ode.rtol = config.ode.atol = 1e-12;
-  const NormaSample reference = runOpenLoop(p, config).back();
-  const NormaDynamics dynamics(p);
-  PlantState state;
-  state.q = config.q0;
-  state.qd = config.qd0;
-  for (int k = 0; k < 1000; ++k) state = stepPlant(dynamics, state, 0.0, 0.0, 1e-3);
-  EXPECT_LT((state.q - reference.q).cwiseAbs().maxCoeff(), 1e-9);
-  EXPECT_LT((state.qd - reference.qd).cwiseAbs().maxCoeff(), 1e-9);
-  EXPECT_NEAR(state.x, reference.x, 1e-9);
-  EXPECT_NEAR(state.psi, reference.psi, 1e-9);
-  // A held torque winds the pendulum up relative to the shell (α̈ > 0 at rest, M⁻¹ row 2).
-  const PlantState pushed = stepPlant(dynamics, PlantState(), 0.1, 0.0, 1e-3);
-  EXPECT_GT(pushed.qd(1), 0.0);
-  EXPECT_THROW(stepPlant(dynamics, PlantState(), 0.0, 0.0, 0.0), std::invalid_argument);
-}
-
 // The default tolerances (rosenbrock4, rtol 1e-3, atol 1e-6) keep the paper's 1300 s run within
 // 1 mm of a tight-tolerance run of another method (dopri5, rtol = atol = 1e-10) at every row.
 TEST(NormaSimulation, DefaultTolerancesStayWithinOneMillimetre) {

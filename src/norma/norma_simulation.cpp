@@ -43,39 +43,6 @@ NormaSample plantSample(const NormaDynamics& dynamics, const OdeState& x, double
 
 }  // namespace
 
-PlantState stepPlant(const NormaDynamics& dynamics, const PlantState& state, double torque,
-                     double force, double dt) {
-  requirePositive(dt, "plant step dt [s]");
-  const Vector4 u = NormaDynamics::generalizedForces(torque, force);
-  OdeState x(kPlantStates);
-  for (std::size_t i = 0; i < 4; ++i) {
-    x[i] = state.q(i);
-    x[4 + i] = state.qd(i);
-  }
-  x[8] = state.x;
-  x[9] = state.y;
-  x[10] = state.psi;
-  OdeState k1(kPlantStates), k2(kPlantStates), k3(kPlantStates), k4(kPlantStates), tmp(x);
-  writePlantRates(dynamics, x, u, k1);
-  tmp = x + 0.5 * dt * k1;
-  writePlantRates(dynamics, tmp, u, k2);
-  tmp = x + 0.5 * dt * k2;
-  writePlantRates(dynamics, tmp, u, k3);
-  tmp = x + dt * k3;
-  writePlantRates(dynamics, tmp, u, k4);
-  x += dt / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
-  PlantState next;
-  for (std::size_t i = 0; i < 4; ++i) {
-    next.q(i) = x[i];
-    next.qd(i) = x[4 + i];
-  }
-  next.x = x[8];
-  next.y = x[9];
-  next.psi = x[10];
-  for (double v : x) requireFinite(v, "plant state after the step");
-  return next;
-}
-
 PathPoint lissajousPath(double t) {
   requireFinite(t, "t [s]");
   const double s1 = std::sin(0.01 * t), c1 = std::cos(0.01 * t);

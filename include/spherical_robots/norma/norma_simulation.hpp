@@ -28,22 +28,6 @@ struct NormaSample {
   double energy = 0.0;             ///< total mechanical energy [J]
 };
 
-/// The plant's state for fixed-step use (a real-time plant node).
-struct PlantState {
-  Vector4 q = Vector4::Zero();   ///< θ, α, φ [rad], δ [m]
-  Vector4 qd = Vector4::Zero();  ///< their rates
-  double x = 0.0, y = 0.0;       ///< centre of the sphere [m]
-  double psi = 0.0;              ///< heading [rad]
-};
-
-/// One classical RK4 step of dt [s] of eqs 46, 6 and 12 with the torque T [N m] and the slider
-/// force F [N] held constant over the step (what a plant fed by actuator efforts at a fixed rate
-/// does). No error control: dt must resolve the plant's own motion (1 ms is ample at section 5's
-/// parameters; the stiffness of the closed loop lives in the controller, outside this step).
-/// @throw std::invalid_argument on dt <= 0, a non-finite input, or a non-finite result.
-PlantState stepPlant(const NormaDynamics& dynamics, const PlantState& state, double torque,
-                     double force, double dt);
-
 /// Open loop: U = 0 from (q0, q̇0) at X = Y = ψ = 0. A slider spring of stiffness
 /// slider_stiffness [N/m] toward δ = 0 (potential ½ k δ², included in energy) may hold the
 /// slider; 0 leaves it free, as the paper's model is.
