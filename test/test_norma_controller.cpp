@@ -160,6 +160,24 @@ TEST(NormaSimulation, MethodsAgree) {
   EXPECT_GT(std::abs(reference.q(0)), 0.1);
 }
 
+// The default tolerances (rosenbrock4, rtol 1e-3, atol 1e-6) keep the paper's 1300 s run within
+// 1 mm of a tight-tolerance run of another method (dopri5, rtol = atol = 1e-10) at every row.
+TEST(NormaSimulation, DefaultTolerancesStayWithinOneMillimetre) {
+  ClosedLoopConfig config;
+  const auto run = runClosedLoop(NormaParameters(), config);
+  config.ode.method = OdeMethod::kDopri5;
+  config.ode.rtol = config.ode.atol = 1e-10;
+  const auto reference = runClosedLoop(NormaParameters(), config);
+  ASSERT_EQ(run.size(), reference.size());
+  double deviation = 0.0;
+  for (std::size_t i = 0; i < run.size(); ++i) {
+    deviation = std::max(deviation, std::hypot(run[i].x - reference[i].x,
+                                               run[i].y - reference[i].y));
+  }
+  EXPECT_LT(deviation, 1e-3);
+  EXPECT_GT(reference.back().error, 1.0);  // the paper's run, far from its path (errata N9)
+}
+
 // The target for the tracking controller on eq 52: over t >= 650 s, RMS ‖e‖ < 0.10 m and
 // max ‖e‖ < 0.30 m, with the slider within ±0.1 m (the stroke R − δ0 each way).
 TEST(NormaSimulation, TrackingControllerMeetsTarget) {

@@ -32,18 +32,9 @@ void requireFinitePath(const PathPoint& r) {
   requireFinite(r.y_ddot, "desired y_ddot");
 }
 
-}  // namespace
-
-KinematicCommand kinematicLayer(const KinematicGains& gains, double R, double x, double y,
-                                double psi, const PathPoint& reference) {
-  requireFinite(gains.k1, "k1");
-  requireFinite(gains.k2, "k2");
-  requirePositive(gains.k3, "k3");
-  requirePositive(R, "R [m]");
-  requireFinite(x, "X");
-  requireFinite(y, "Y");
-  requireFinite(psi, "psi");
-  requireFinitePath(reference);
+// Eqs 48-51 on checked input: the controller checks once per evaluation, not twice.
+KinematicCommand paperKinematics(const KinematicGains& gains, double R, double x, double y,
+                                 double psi, const PathPoint& reference) {
   const double ex = x - reference.x;  // eq 48
   const double ey = y - reference.y;
   KinematicCommand out;
@@ -59,6 +50,21 @@ KinematicCommand kinematicLayer(const KinematicGains& gains, double R, double x,
                               reference.y_dot * reference.y_dot) / R +
                     gains.k2 * gain * e_cos;  // eq 51
   return out;
+}
+
+}  // namespace
+
+KinematicCommand kinematicLayer(const KinematicGains& gains, double R, double x, double y,
+                                double psi, const PathPoint& reference) {
+  requireFinite(gains.k1, "k1");
+  requireFinite(gains.k2, "k2");
+  requirePositive(gains.k3, "k3");
+  requirePositive(R, "R [m]");
+  requireFinite(x, "X");
+  requireFinite(y, "Y");
+  requireFinite(psi, "psi");
+  requireFinitePath(reference);
+  return paperKinematics(gains, R, x, y, psi, reference);
 }
 
 void validate(const ControllerGains& g) {
@@ -142,7 +148,7 @@ ControlOutput NormaController::compute(const Vector4& q, const Vector4& qd, doub
   requireFinitePath(reference);
   const KinematicCommand command =
       kind_ == ControllerKind::kPaper
-          ? kinematicLayer(gains_.kinematic, parameters_.R, x, y, psi, reference)
+          ? paperKinematics(gains_.kinematic, parameters_.R, x, y, psi, reference)
           : trackingLayer(q, qd, x, y, psi, reference);
   const ControllerGains& g = gains_;
   ControlOutput out;

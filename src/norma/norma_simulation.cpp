@@ -1,6 +1,7 @@
 #include "spherical_robots/norma/norma_simulation.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "spherical_robots/core/validation.hpp"
 
@@ -88,10 +89,17 @@ std::vector<NormaSample> runClosedLoop(const NormaParameters& parameters,
   OdeState x(kPlantStates + kControllerStates, 0.0);
   const PathPoint start = lissajousPath(0.0);
   x[10] = std::atan2(start.y_dot, start.x_dot);
+  // The Jacobian's columns evaluate the right-hand side many times at one t.
+  double path_time = std::numeric_limits<double>::quiet_NaN();
+  PathPoint path_point;
   auto control = [&](const OdeState& state, double t) {
+    if (t != path_time) {
+      path_point = lissajousPath(t);
+      path_time = t;
+    }
     const Eigen::Vector3d integrals(state[11], state[12], state[13]);
     return controller.compute(segment(state, 0), segment(state, 4), state[8], state[9],
-                              state[10], integrals, lissajousPath(t));
+                              state[10], integrals, path_point);
   };
   const OdeRhs rhs = [&](const OdeState& state, OdeState& dxdt, double t) {
     const ControlOutput u = control(state, t);

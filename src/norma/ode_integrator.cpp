@@ -29,8 +29,9 @@ std::vector<double> logTimes(double duration, double log_rate) {
   return times;
 }
 
-// Forward differences in x and t for Rosenbrock's W matrix; the step's error estimate keeps the
-// result honest whatever the Jacobian's accuracy.
+// Forward differences (relative step √ε) in x and t. Rosenbrock's order assumes the exact
+// Jacobian; these are good to about 1e-8 relative, which is harmless at the tolerances this
+// method is meant for but makes it crawl near rtol 1e-10 (use kDopri5 there).
 struct FiniteDifferenceJacobian {
   const OdeRhs* rhs;
   void operator()(const OdeState& x, OdeMatrix& jac, double t, OdeState& dfdt) const {

@@ -147,7 +147,7 @@ X = Y = 0 with all q and q_dot zero, the heading along the desired initial veloc
 controller's integrals zero. --controller paper is the published two-layer controller (eqs
 48-51, k1 = 0.1, k2 = -0.1, k3 = 5; PID1 (1,0,0), PID2 (10,7,3), PID3 (15,3,10) with the
 gravity feed-forward g m_Sl sin(phi)); --controller tracking is this project's
-(docs/conventions.md, "Norma controller").
+(docs/conventions.md, "Norma", "Controller").
 Open loop (--open-loop): zero inputs from --q0 and --qd0 at X = Y = psi = 0. Nothing stops the
 free slider at the ends of the shaft (a warning on stderr says when a logged row has it off).
 

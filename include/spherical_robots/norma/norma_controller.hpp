@@ -2,7 +2,7 @@
 // Norma's two-layer path-tracking controller (Moazami et al. 2019, section 4): a kinematic layer
 // (eqs 48-51) turns the tracking error into a rolling-rate and a slider set-point, and a PID
 // cascade (Fig. 5, Table 1) turns those into the pendulum torque T and the slider force F. Also
-// a tracking controller of this project's design (docs/conventions.md, "Norma controller").
+// a tracking controller of this project's design (docs/conventions.md, "Norma", "Controller").
 // No ROS.
 //
 // Loop signs (derived from the model, docs/conventions.md): T > 0 raises β̈ = α̈ − θ̈ (at q = 0,

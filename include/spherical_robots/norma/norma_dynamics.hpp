@@ -92,7 +92,7 @@ class NormaDynamics {
   PlanarRates planarRates(const Vector4& q, const Vector4& qd, double psi) const;
 
   /// The tilt φ [rad] at which a slider held at δ [m] balances the robot at rest with the
-  /// pendulum hanging (α = θ), G3 = 0: tan φ = −m_Sl (δ0 + δ) − m_P L0) / (m_P L).
+  /// pendulum hanging (α = θ), G3 = 0: tan φ = −(m_Sl (δ0 + δ) − m_P L0) / (m_P L).
   /// @throw std::invalid_argument on a non-finite δ.
   double staticTilt(double delta) const;
 
