@@ -6,6 +6,8 @@ position only), ~dwell [s] simulated between a verdict and the next target, ~loo
 Publishes goal (geometry_msgs/PoseStamped) and waits for freebot_ik's verdict on goal_result
 (arrived, unreachable, rejected or aborted) before the next one.
 """
+import time
+
 import rospy
 from geometry_msgs.msg import PoseStamped
 
@@ -36,9 +38,10 @@ def main():
     rospy.Subscriber('goal_result', FreebotGoalResult,
                      lambda msg: verdicts.append(msg) if msg.status in FINAL else None)
     publisher = rospy.Publisher('goal', PoseStamped, queue_size=1)
-    while not rospy.is_shutdown() and rospy.Time.now().is_zero():
-        rospy.sleep(0.1)  # wait for the plant's clock
-    rospy.sleep(1.0)      # and for freebot_ik's first chain state
+    while not rospy.is_shutdown() and (rospy.Time.now().is_zero() or
+                                       publisher.get_num_connections() == 0):
+        time.sleep(0.1)  # the plant's clock and freebot_ik's subscription
+    rospy.sleep(1.0)     # and freebot_ik's first chain state
     while not rospy.is_shutdown():
         for index, goal in enumerate(goals):
             count = len(verdicts)
@@ -58,4 +61,7 @@ def main():
 
 
 if __name__ == '__main__':
-    main()
+    try:
+        main()
+    except rospy.ROSInterruptException:
+        pass
