@@ -3,7 +3,7 @@
 in simulated time, in the stack's namespace.
 
 Private params: ~frame_prefix; ~reachable ([x, y, z, qw, qx, qy, qz]: a full-pose goal the chain
-reaches), ~unreachable (one it cannot); ~position_bound [m], ~orientation_bound [rad] on the
+reaches), ~position_only ([x, y, z]: a position it reaches), ~unreachable (a goal it cannot); ~position_bound [m], ~orientation_bound [rad] on the
 end-effector's tf after arrival; ~arrival_time [s] simulated; ~hold_bound [m] on how far the
 end-effector may move after an unreachable verdict.
 """
@@ -167,7 +167,19 @@ class FreebotStackCheck(unittest.TestCase):
             distance = math.sqrt(t.translation.x ** 2 + t.translation.y ** 2 + t.translation.z ** 2)
             self.assertAlmostEqual(distance, self.radii[i - 1] + self.radii[i], delta=1e-9)
 
-    def test_03_unreachable(self):
+    def test_03_position_only(self):
+        """A goal with an all-zero orientation: B_n's centre arrives, whatever its orientation."""
+        target = [float(v) for v in rospy.get_param('~position_only')]
+        verdict = self.send(target)
+        self.assertEqual(verdict.status, FreebotGoalResult.ARRIVED, verdict.message)
+        sim_sleep(0.2)
+        position_error = math.dist(self.end_effector()[0], target)
+        rospy.loginfo('position only: arrived after %.2f s (simulated), %.3g m from the goal (tf)',
+                      verdict.elapsed, position_error)
+        self.assertLessEqual(position_error, float(rospy.get_param('~position_bound')))
+        self.assertLessEqual(verdict.elapsed, float(rospy.get_param('~arrival_time')))
+
+    def test_04_unreachable(self):
         """A goal out of reach: a clear verdict (goal_result, /diagnostics WARN) and nothing moves:
         the wheels stay at rest and the end-effector holds its pose."""
         before = self.end_effector()[0]
