@@ -5,13 +5,15 @@ in simulated time, in the stack's namespace.
 Private params: ~frame_prefix; ~reachable ([x, y, z, qw, qx, qy, qz]: a full-pose goal the chain
 reaches), ~position_only ([x, y, z]: a position it reaches), ~unreachable (a goal it cannot); ~position_bound [m], ~orientation_bound [rad] on the
 end-effector's tf after arrival; ~arrival_time [s] simulated; ~hold_bound [m] on how far the
-end-effector may move after an unreachable verdict.
+end-effector may move after an unreachable verdict. The last test kills freebot_ik to fire the
+hardware's watchdog (docs/hardware_interface.md): it needs ideal actuators (exact zeros).
 """
 import math
 import threading
 import time
 import unittest
 
+import rosnode
 import rospy
 import rostest
 import tf2_ros
@@ -26,6 +28,8 @@ PKG = 'spherical_robots'
 NAME = 'freebot_stack_check'
 WALL_DEADLINE = 240.0  # [s] wall, for anything the stack should do in time
 IK_STATUS = 'freebot_ik: freebot ik'  # after the namespace: '<ns>/freebot_ik: freebot ik'
+PLANT_STATUS = 'freebot_plant: freebot plant'
+SLACK = 0.5  # [s] simulated: message latency at 5x real time (0.1 s of wall)
 FINAL = (FreebotGoalResult.ARRIVED, FreebotGoalResult.UNREACHABLE, FreebotGoalResult.REJECTED,
          FreebotGoalResult.ABORTED)
 
@@ -121,8 +125,15 @@ class FreebotStackCheck(unittest.TestCase):
         return next(r for r in self.results.since(count) if r.status in FINAL)
 
     def ik_status(self, since):
-        statuses = [s for a in self.diagnostics.since(since) for s in a.status if s.name.endswith(IK_STATUS)]
+        return self.status(IK_STATUS, since)
+
+    def status(self, suffix, since=0):
+        statuses = [s for a in self.diagnostics.since(since) for s in a.status if s.name.endswith(suffix)]
         return statuses[-1] if statuses else None
+
+    def value(self, suffix, key):
+        status = self.status(suffix)
+        return next((pair.value for pair in status.values if pair.key == key), None) if status else None
 
     def test_01_service(self):
         """solve_ik: the reachable target within the solver's default tolerances, the other not,
@@ -203,6 +214,70 @@ class FreebotStackCheck(unittest.TestCase):
         self.assertGreater(self.actuators.count(), actuators_index + 100)
         self.assertLess(fastest, 1e-9)
         self.assertLess(moved, float(rospy.get_param('~hold_bound')))
+
+    def test_05_bad_measurements_kill_nothing(self):
+        """A NaN and an incomplete actuators/state are rejected, counted on /diagnostics, and the
+        plant keeps publishing."""
+        publisher = rospy.Publisher('actuators/state', JointState, queue_size=10)
+        names = ['module%d_wheel_%s' % (i, side) for i in range(1, self.modules + 1)
+                 for side in ('right', 'left')]
+        bad_nan = JointState(name=names, velocity=[float('nan')] + [0.0] * (len(names) - 1))
+        bad_missing = JointState(name=names[1:], velocity=[0.0] * (len(names) - 1))
+        key = rospy.resolve_name('actuators/state') + ' rejected'
+        deadline = time.time() + WALL_DEADLINE
+        while int(self.value(PLANT_STATUS, key) or 0) < 2:
+            self.assertLess(time.time(), deadline, 'the plant never reported 2 rejections')
+            publisher.publish(bad_nan)
+            publisher.publish(bad_missing)
+            time.sleep(0.2)
+        count = self.states.count()
+        sim_sleep(1.0)
+        self.assertGreater(self.states.count(), count + 50, 'freebot_state stopped')
+        self.assertTrue(all(math.isfinite(v) for v in self.end_effector()[0]))
+
+    def test_06_watchdog_when_ik_dies(self):
+        """Killing freebot_ik mid-motion: the hardware's watchdog brings every wheel to rest within
+        command_timeout + |v|/max_acceleration + one period of the last command, and the chain
+        stops."""
+        hardware = rospy.resolve_name('hardware_interface')
+        timeout = float(rospy.get_param(hardware + '/command_timeout'))
+        acceleration = float(rospy.get_param(hardware + '/max_acceleration'))
+        period = 1.0 / float(rospy.get_param(hardware + '/rate'))
+        commands = Recorder('actuators/command', JointState)
+        count = self.results.count()
+        goal = PoseStamped()
+        goal.header.frame_id = 'world'
+        goal.pose = pose_of(self.reachable)
+        self.goal_pub.publish(goal)
+        wait_until(lambda: any(r.status == FreebotGoalResult.MOVING for r in self.results.since(count)),
+                   'freebot_ik to start moving')
+        wait_until(lambda: max(abs(v) for v in self.actuators.since(-1)[0].velocity) > 1.0,
+                   'a wheel faster than 1 rad/s')
+        speed = max(abs(v) for v in self.actuators.since(-1)[0].velocity)
+        node = rospy.resolve_name('freebot_ik')
+        rosnode.kill_nodes([node])
+        wait_until(lambda: not rosnode.rosnode_ping(node, max_count=1), 'freebot_ik to die')
+        wait_until(lambda: commands.count() > 0, 'a recorded command')
+        last_command = commands.messages[-1][0]
+
+        def first_at_rest():
+            with self.actuators.lock:
+                return next((m.header.stamp.to_sec() for _, m in self.actuators.messages
+                             if m.header.stamp.to_sec() >= last_command and
+                             all(v == 0.0 for v in m.velocity)), None)
+        wait_until(lambda: first_at_rest() is not None, 'every wheel at rest')
+        at_rest = first_at_rest() - last_command
+        bound = timeout + speed / acceleration + period
+        sim_sleep(0.5)
+        before = self.end_effector()[0]
+        sim_sleep(1.0)
+        moved = math.dist(before, self.end_effector()[0])
+        rospy.loginfo('watchdog: wheels at rest %.3f s (simulated) after the last command (bound '
+                      '%.3f s from %.2f rad/s), then the end-effector moved %.3g m', at_rest,
+                      bound, speed, moved)
+        self.assertLess(at_rest, bound + SLACK)
+        self.assertGreater(at_rest, timeout - SLACK, 'the watchdog fired early')
+        self.assertLess(moved, 1e-12)
 
 
 if __name__ == '__main__':
