@@ -100,12 +100,7 @@ void FreebotIkRos::onState(const spherical_robots::FreebotState& msg) {
     bool arrived = true;
     for (const freebot::ModuleDrive& drive : last_drive_) arrived = arrived && drive.arrived;
     if (arrived) {
-      const freebot::LinkPose end = chain_.manipulator().endEffector(state_->joints);
-      const double position_error = (end.position - goal_->position).norm();
-      const double orientation_error =
-          goal_->mode == freebot::IkMode::FullPose
-              ? freebot::angleBetween(end.orientation, goal_->orientation)
-              : 0.0;
+      const auto [position_error, orientation_error] = errorsTo(*goal_);
       if (position_error <= goal_position_tolerance_ &&
           orientation_error <= goal_orientation_tolerance_) {
         finish(spherical_robots::FreebotGoalResult::ARRIVED, position_error, orientation_error,
@@ -123,10 +118,8 @@ void FreebotIkRos::onState(const spherical_robots::FreebotState& msg) {
                now);
       }
     } else if ((now - goal_->received).toSec() > goal_timeout_) {
-      const freebot::LinkPose end = chain_.manipulator().endEffector(state_->joints);
-      finish(spherical_robots::FreebotGoalResult::ABORTED,
-             (end.position - goal_->position).norm(),
-             freebot::angleBetween(end.orientation, goal_->orientation),
+      const auto [position_error, orientation_error] = errorsTo(*goal_);
+      finish(spherical_robots::FreebotGoalResult::ABORTED, position_error, orientation_error,
              "goal timeout: holding the pose reached", now);
     } else {
       for (std::size_t i = 0; i < wheels.size(); ++i) wheels[i] = last_drive_[i].wheels;
@@ -134,6 +127,14 @@ void FreebotIkRos::onState(const spherical_robots::FreebotState& msg) {
   }
   command_pub_.publish(conversions::jointStateFromWheelSpeeds(wheels, now));
   updater_.update();
+}
+
+std::pair<double, double> FreebotIkRos::errorsTo(const Goal& goal) const {
+  const freebot::LinkPose end = chain_.manipulator().endEffector(state_->joints);
+  return {(end.position - goal.position).norm(),
+          goal.mode == freebot::IkMode::FullPose
+              ? freebot::angleBetween(end.orientation, goal.orientation)
+              : 0.0};
 }
 
 void FreebotIkRos::onGoal(const geometry_msgs::PoseStamped& msg) {
@@ -283,6 +284,7 @@ void FreebotIkRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status)
   }
   status.add("goals", goals_);
   status.add("unreachable goals", unreachable_);
+  status.add("rejected goals", goal_input_.rejected());
   status.add("last verdict", have_result_ ? statusName(last_result_.status) : "none");
   status.add("last verdict, position error [m]", have_result_ ? last_result_.position_error : NAN);
   status.add("last verdict, orientation error [rad]",

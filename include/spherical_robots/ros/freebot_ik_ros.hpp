@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "spherical_robots/FreebotGoalResult.h"
@@ -56,6 +57,8 @@ class FreebotIkRos {
   void onGoal(const geometry_msgs::PoseStamped& msg);
   bool onSolve(spherical_robots::SolveFreebotIk::Request& request,
                spherical_robots::SolveFreebotIk::Response& response);
+  /// B_n's position [m] and orientation [rad] errors to the goal (0 rad for a position-only one).
+  std::pair<double, double> errorsTo(const Goal& goal) const;
   /// Solves for the goal from the current state; false (and a verdict) if unreachable.
   bool plan(Goal& goal, const ros::Time& now);
   void finish(std::uint8_t status, double position_error, double orientation_error,
