@@ -20,7 +20,7 @@ packages=(
   python3-rospy python3-roslaunch python3-rosbag python3-rosnode python3-rostopic rosbash
   python3-nav-msgs python3-geometry-msgs python3-sensor-msgs python3-diagnostic-msgs
   python3-std-msgs python3-tf2-ros python3-tf2-msgs python3-visualization-msgs
-  python3-diagnostic-updater
+  python3-diagnostic-updater python3-interactive-markers
   ros-robot-state-publisher rviz xvfb xauth x11-utils imagemagick
   python3-numpy python3-matplotlib
   # scripts/derive_norma_dynamics.py

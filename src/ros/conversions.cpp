@@ -340,4 +340,82 @@ visualization_msgs::Marker surfaceMesh(const terrain::Surface& surface, double h
   return msg;
 }
 
+// --- FreeBOT -----------------------------------------------------------------------------------
+
+Eigen::Quaterniond fromQuaternion(const geometry_msgs::Quaternion& q, const std::string& field,
+                                  double tolerance) {
+  const Eigen::Quaterniond value(q.w, q.x, q.y, q.z);
+  if (!value.coeffs().allFinite())
+    throw std::invalid_argument(field + " has a non-finite coefficient");
+  if (std::abs(value.norm() - 1.0) > tolerance) {
+    std::ostringstream what;
+    what << field << " has norm " << value.norm() << ", expected a unit quaternion (within "
+         << tolerance << ")";
+    throw std::invalid_argument(what.str());
+  }
+  return value.normalized();
+}
+
+std::vector<std::string> freebotWheelNames(std::size_t modules) {
+  std::vector<std::string> names;
+  for (std::size_t i = 1; i <= modules; ++i) {
+    names.push_back("module" + std::to_string(i) + "_wheel_right");
+    names.push_back("module" + std::to_string(i) + "_wheel_left");
+  }
+  return names;
+}
+
+std::vector<freebot::WheelSpeeds> wheelSpeedsFromJointState(const sensor_msgs::JointState& msg,
+                                                            std::size_t modules) {
+  const std::vector<double> values = velocitiesByName(msg, freebotWheelNames(modules));
+  std::vector<freebot::WheelSpeeds> wheels(modules);
+  for (std::size_t i = 0; i < modules; ++i) wheels[i] = {values[2 * i], values[2 * i + 1]};
+  return wheels;
+}
+
+sensor_msgs::JointState jointStateFromWheelSpeeds(const std::vector<freebot::WheelSpeeds>& wheels,
+                                                  const ros::Time& stamp) {
+  std::vector<double> values;
+  for (const freebot::WheelSpeeds& pair : wheels) {
+    values.push_back(pair.right);
+    values.push_back(pair.left);
+  }
+  return velocityJointState(freebotWheelNames(wheels.size()), values, stamp);
+}
+
+spherical_robots::FreebotState toFreebotStateMsg(const freebot::ChainState& state,
+                                                 const freebot::LinkPose& end,
+                                                 const std::string& frame, const ros::Time& stamp) {
+  spherical_robots::FreebotState msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = frame;
+  for (const freebot::SrcJointState& joint : state.joints) {
+    msg.link.push_back(toQuaternion(joint.link));
+    msg.base.push_back(toQuaternion(joint.base));
+  }
+  msg.heading = state.headings;
+  msg.end_effector.position = toPoint(end.position);
+  msg.end_effector.orientation = toQuaternion(end.orientation);
+  return msg;
+}
+
+freebot::ChainState chainStateFromMsg(const spherical_robots::FreebotState& msg) {
+  if (msg.link.size() != msg.base.size() || msg.link.size() != msg.heading.size()) {
+    throw std::invalid_argument("link, base and heading must have one entry per joint, got " +
+                                std::to_string(msg.link.size()) + ", " +
+                                std::to_string(msg.base.size()) + ", " +
+                                std::to_string(msg.heading.size()));
+  }
+  freebot::ChainState state;
+  for (std::size_t i = 0; i < msg.link.size(); ++i) {
+    const std::string joint = "[" + std::to_string(i) + "]";
+    state.joints.push_back({fromQuaternion(msg.link[i], "link" + joint),
+                            fromQuaternion(msg.base[i], "base" + joint)});
+    if (!std::isfinite(msg.heading[i]))
+      throw std::invalid_argument("heading" + joint + " is not finite");
+    state.headings.push_back(msg.heading[i]);
+  }
+  return state;
+}
+
 }  // namespace spherical_robots::conversions

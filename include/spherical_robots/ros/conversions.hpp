@@ -20,8 +20,10 @@
 #include <string>
 #include <vector>
 
+#include "spherical_robots/FreebotState.h"
 #include "spherical_robots/TerrainState.h"
 #include "spherical_robots/TrackingError.h"
+#include "spherical_robots/freebot/freebot_chain.hpp"
 #include "spherical_robots/terrain/teleop.hpp"
 #include "spherical_robots/terrain/pure_pursuit.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
@@ -130,5 +132,36 @@ nav_msgs::Path sampledPath(const terrain::ReferencePath& path, const terrain::Su
 visualization_msgs::Marker surfaceMesh(const terrain::Surface& surface, double half_extent,
                                        double resolution, const std::string& frame,
                                        const ros::Time& stamp);
+
+// --- FreeBOT -----------------------------------------------------------------------------------
+
+/// Message (x, y, z, w) -> Eigen (w, x, y, z), normalised.
+/// @throw std::invalid_argument naming `field` if a coefficient is not finite or
+/// |‖q‖ − 1| > tolerance.
+Eigen::Quaterniond fromQuaternion(const geometry_msgs::Quaternion& q, const std::string& field,
+                                  double tolerance = 1e-6);
+
+/// The wheel actuators of a chain of `modules` FreeBOT modules, in order: module1_wheel_right,
+/// module1_wheel_left, module2_wheel_right, … (docs/conventions.md, "FreeBOT stack").
+std::vector<std::string> freebotWheelNames(std::size_t modules);
+
+/// Every module's wheel speeds [rad/s] from the velocities of a JointState (names as
+/// freebotWheelNames, others ignored). @throw std::invalid_argument as velocitiesByName.
+std::vector<freebot::WheelSpeeds> wheelSpeedsFromJointState(const sensor_msgs::JointState& msg,
+                                                            std::size_t modules);
+
+/// A JointState commanding these wheel speeds [rad/s] (names as freebotWheelNames).
+sensor_msgs::JointState jointStateFromWheelSpeeds(const std::vector<freebot::WheelSpeeds>& wheels,
+                                                  const ros::Time& stamp);
+
+/// The chain's state message; `end` is B_n's pose in `frame`.
+spherical_robots::FreebotState toFreebotStateMsg(const freebot::ChainState& state,
+                                                 const freebot::LinkPose& end,
+                                                 const std::string& frame, const ros::Time& stamp);
+
+/// The chain state a FreebotState message describes (quaternions normalised).
+/// @throw std::invalid_argument if the arrays differ in length, a quaternion is not unit within
+/// 1e-6 or a heading is not finite.
+freebot::ChainState chainStateFromMsg(const spherical_robots::FreebotState& msg);
 
 }  // namespace spherical_robots::conversions

@@ -1,0 +1,70 @@
+#pragma once
+// The freebot_plant node: a FreeBOT chain's state integrated from the MEASURED wheel speeds of the
+// hardware interface (core FreebotChain::advance), published as the chain state, tf for every
+// module's sphere and rviz markers. With a real driver it is the chain's dead-reckoning estimate.
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "spherical_robots/freebot/freebot_chain.hpp"
+#include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/sim_clock.hpp"
+
+namespace spherical_robots {
+
+/// The chain both FreeBOT nodes read from the node handle's namespace: radii (list [m]: l_0 the
+/// fixed base's, l_1 … l_n, at least two) and trolley/{wheel_radius, wheel_interval,
+/// shell_thickness} [m] (Table II defaults 0.005, 0.046, 0.002).
+/// @throw std::invalid_argument naming the parameter if one is missing or bad.
+freebot::FreebotChain freebotChainFromParams(const ros::NodeHandle& nh);
+
+/// The tf frame of sphere B_i (i = 0: the fixed base): "<prefix>link<i>".
+std::string freebotLinkFrame(const std::string& prefix, std::size_t i);
+
+/// Parameters (private, ~): frame_prefix (""); step [s] (0.01): the tick and the integration
+/// step; publish_rate [Hz] (50): tf and markers; state_timeout [s] (0.1): older measured wheel
+/// speeds count as zero; publish_clock (false), speedup (1), wait_for_subscribers (1),
+/// start_timeout [s] (10): as norma_dynamics; duration [s] (0 = forever).
+/// Subscribes actuators/state (velocities of module<i>_wheel_right/left [rad/s]). Publishes
+/// freebot_state (every tick), tf world -> <prefix>link0 (identity) and <prefix>link<i-1> ->
+/// <prefix>link<i> (B_i's centre and q_i), freebot_markers (spheres and trolleys) and
+/// /diagnostics.
+class FreebotPlantRos {
+ public:
+  /// @throw std::invalid_argument on a bad parameter.
+  FreebotPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh);
+
+ private:
+  void onActuatorState(const sensor_msgs::JointState& msg);
+  void tick(const ros::Time& now);
+  void publishFrames(const ros::Time& now);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  freebot::FreebotChain chain_;
+  std::string prefix_;
+  double step_;
+  double duration_;
+  double publish_period_;
+  freebot::ChainState state_;
+  std::vector<freebot::WheelSpeeds> wheels_;  ///< last measured [rad/s]
+  unsigned long integration_failures_ = 0;
+  ros::Time start_;
+  ros::Time last_tick_;
+  ros::Time last_publish_;
+  bool finished_ = false;
+  InputMonitor actuator_input_;
+  ros::Subscriber actuator_sub_;
+  ros::Publisher state_pub_;
+  ros::Publisher marker_pub_;
+  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  diagnostic_updater::Updater updater_;
+  std::unique_ptr<SimClock> clock_;  ///< last: it ticks only once everything else exists
+};
+
+}  // namespace spherical_robots

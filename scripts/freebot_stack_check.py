@@ -1,0 +1,285 @@
+#!/usr/bin/env python3
+"""rostest of the FreeBOT stack (launch/freebot_stack.launch, test/freebot_stack.test), headless,
+in simulated time, in the stack's namespace.
+
+Private params: ~frame_prefix; ~reachable ([x, y, z, qw, qx, qy, qz]: a full-pose goal the chain
+reaches), ~position_only ([x, y, z]: a position it reaches), ~unreachable (a goal it cannot); ~position_bound [m], ~orientation_bound [rad] on the
+end-effector's tf after arrival; ~arrival_time [s] simulated; ~hold_bound [m] on how far the
+end-effector may move after an unreachable verdict. The last test kills freebot_ik to fire the
+hardware's watchdog (docs/hardware_interface.md): it needs ideal actuators (exact zeros).
+"""
+import math
+import threading
+import time
+import unittest
+
+import rosnode
+import rospy
+import rostest
+import tf2_ros
+from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
+from geometry_msgs.msg import Pose, PoseStamped
+from sensor_msgs.msg import JointState
+
+from spherical_robots.msg import FreebotGoalResult, FreebotState
+from spherical_robots.srv import SolveFreebotIk
+
+PKG = 'spherical_robots'
+NAME = 'freebot_stack_check'
+WALL_DEADLINE = 240.0  # [s] wall, for anything the stack should do in time
+IK_STATUS = 'freebot_ik: freebot ik'  # after the namespace: '<ns>/freebot_ik: freebot ik'
+PLANT_STATUS = 'freebot_plant: freebot plant'
+SLACK = 0.5  # [s] simulated: message latency at 5x real time (0.1 s of wall)
+FINAL = (FreebotGoalResult.ARRIVED, FreebotGoalResult.UNREACHABLE, FreebotGoalResult.REJECTED,
+         FreebotGoalResult.ABORTED)
+
+
+class Recorder:
+    """Keeps every message of a topic, with the simulated time it arrived."""
+
+    def __init__(self, topic, msg_type):
+        self.lock = threading.Lock()
+        self.messages = []
+        self.subscriber = rospy.Subscriber(topic, msg_type, self.callback, queue_size=1000)
+
+    def callback(self, msg):
+        with self.lock:
+            self.messages.append((rospy.Time.now().to_sec(), msg))
+
+    def count(self):
+        with self.lock:
+            return len(self.messages)
+
+    def since(self, index):
+        with self.lock:
+            return [msg for _, msg in self.messages[index:]]
+
+
+def wait_until(condition, what, timeout=WALL_DEADLINE):
+    deadline = time.time() + timeout
+    while not condition():
+        if time.time() > deadline or rospy.is_shutdown():
+            raise AssertionError('timed out after %.0f s (wall) waiting for %s' % (timeout, what))
+        time.sleep(0.05)
+
+
+def sim_sleep(seconds):
+    end = rospy.Time.now().to_sec() + seconds
+    wait_until(lambda: rospy.Time.now().to_sec() >= end, '%.1f s of simulated time' % seconds)
+
+
+def pose_of(values):
+    pose = Pose()
+    pose.position.x, pose.position.y, pose.position.z = values[:3]
+    if len(values) == 7:
+        o = pose.orientation
+        o.w, o.x, o.y, o.z = values[3:]
+    return pose
+
+
+def quaternion_angle(a, b):
+    """The angle [rad] between two unit quaternions given as (w, x, y, z)."""
+    na = math.sqrt(sum(c * c for c in a))
+    nb = math.sqrt(sum(c * c for c in b))
+    dot = abs(sum(x * y for x, y in zip(a, b))) / (na * nb)
+    return 2.0 * math.acos(min(1.0, dot))
+
+
+class FreebotStackCheck(unittest.TestCase):
+
+    @classmethod
+    def setUpClass(cls):
+        cls.prefix = rospy.get_param('~frame_prefix', rospy.get_namespace().strip('/') + '/')
+        cls.radii = [float(r) for r in rospy.get_param('radii')]
+        cls.modules = len(cls.radii) - 1
+        cls.end_frame = cls.prefix + 'link%d' % cls.modules
+        cls.reachable = [float(v) for v in rospy.get_param('~reachable')]
+        cls.unreachable = [float(v) for v in rospy.get_param('~unreachable')]
+        cls.results = Recorder('goal_result', FreebotGoalResult)
+        cls.states = Recorder('freebot_state', FreebotState)
+        cls.actuators = Recorder('actuators/state', JointState)
+        cls.diagnostics = Recorder('/diagnostics', DiagnosticArray)
+        cls.tf_buffer = tf2_ros.Buffer()
+        cls.tf_listener = tf2_ros.TransformListener(cls.tf_buffer)
+        cls.goal_pub = rospy.Publisher('goal', PoseStamped, queue_size=1)
+        wait_until(lambda: cls.states.count() > 0, 'the first freebot_state message')
+        wait_until(lambda: cls.goal_pub.get_num_connections() > 0, 'freebot_ik on goal')
+
+    def end_effector(self):
+        """B_n's centre and orientation (w, x, y, z) in world, from tf."""
+        t = self.tf_buffer.lookup_transform('world', self.end_frame, rospy.Time(0),
+                                            rospy.Duration(10.0)).transform
+        return ((t.translation.x, t.translation.y, t.translation.z),
+                (t.rotation.w, t.rotation.x, t.rotation.y, t.rotation.z))
+
+    def send(self, values):
+        """Publishes a goal and returns freebot_ik's final verdict on it."""
+        count = self.results.count()
+        goal = PoseStamped()
+        goal.header.frame_id = 'world'
+        goal.header.stamp = rospy.Time.now()
+        goal.pose = pose_of(values)
+        self.goal_pub.publish(goal)
+        wait_until(lambda: any(r.status in FINAL for r in self.results.since(count)),
+                   'a verdict on goal_result')
+        return next(r for r in self.results.since(count) if r.status in FINAL)
+
+    def ik_status(self, since):
+        return self.status(IK_STATUS, since)
+
+    def status(self, suffix, since=0):
+        statuses = [s for a in self.diagnostics.since(since) for s in a.status if s.name.endswith(suffix)]
+        return statuses[-1] if statuses else None
+
+    def value(self, suffix, key):
+        status = self.status(suffix)
+        return next((pair.value for pair in status.values if pair.key == key), None) if status else None
+
+    def test_01_service(self):
+        """solve_ik: the reachable target within the solver's default tolerances, the other not,
+        with the closest pose's errors; nothing moves."""
+        rospy.wait_for_service('solve_ik', timeout=60.0)
+        solve = rospy.ServiceProxy('solve_ik', SolveFreebotIk)
+        before = self.end_effector()[0]
+        reply = solve(target=pose_of(self.reachable), position_only=False)
+        self.assertTrue(reply.success, reply.message)
+        self.assertLessEqual(reply.position_error, 1e-5)
+        self.assertLessEqual(reply.orientation_error, 1e-4)
+        self.assertEqual(len(reply.joint_quaternions), self.modules)
+        reply = solve(target=pose_of(self.unreachable), position_only=True)
+        self.assertFalse(reply.success, reply.message)
+        # The closest point of a chain of reach R to a target at distance d > R is d - R away.
+        d = math.sqrt(sum(v * v for v in self.unreachable[:3]))
+        reach = sum(a + b for a, b in zip(self.radii[:-1], self.radii[1:]))
+        self.assertAlmostEqual(reply.position_error, d - reach, delta=1e-4)
+        sim_sleep(0.5)
+        self.assertLess(math.dist(before, self.end_effector()[0]), 1e-9)
+
+    def test_02_reachable(self):
+        """A full-pose goal: the end-effector's tf arrives within the bounds, in time, and the
+        spheres stay in contact (centre distances l_{i-1} + l_i)."""
+        start = rospy.Time.now().to_sec()
+        verdict = self.send(self.reachable)
+        self.assertEqual(verdict.status, FreebotGoalResult.ARRIVED, verdict.message)
+        sim_sleep(0.2)  # tf at 50 Hz
+        position, orientation = self.end_effector()
+        position_error = math.dist(position, self.reachable[:3])
+        orientation_error = quaternion_angle(orientation, self.reachable[3:])
+        rospy.loginfo('arrived after %.2f s (simulated): %.3g m, %.3g rad from the goal (tf)',
+                      verdict.elapsed, position_error, orientation_error)
+        self.assertLessEqual(position_error, float(rospy.get_param('~position_bound')))
+        self.assertLessEqual(orientation_error, float(rospy.get_param('~orientation_bound')))
+        self.assertLessEqual(verdict.elapsed, float(rospy.get_param('~arrival_time')))
+        self.assertLessEqual(rospy.Time.now().to_sec() - start,
+                             float(rospy.get_param('~arrival_time')) + 1.0)
+        for i in range(1, self.modules + 1):
+            t = self.tf_buffer.lookup_transform(self.prefix + 'link%d' % (i - 1),
+                                                self.prefix + 'link%d' % i, rospy.Time(0)).transform
+            distance = math.sqrt(t.translation.x ** 2 + t.translation.y ** 2 + t.translation.z ** 2)
+            self.assertAlmostEqual(distance, self.radii[i - 1] + self.radii[i], delta=1e-9)
+
+    def test_03_position_only(self):
+        """A goal with an all-zero orientation: B_n's centre arrives, whatever its orientation."""
+        target = [float(v) for v in rospy.get_param('~position_only')]
+        verdict = self.send(target)
+        self.assertEqual(verdict.status, FreebotGoalResult.ARRIVED, verdict.message)
+        sim_sleep(0.2)
+        position_error = math.dist(self.end_effector()[0], target)
+        rospy.loginfo('position only: arrived after %.2f s (simulated), %.3g m from the goal (tf)',
+                      verdict.elapsed, position_error)
+        self.assertLessEqual(position_error, float(rospy.get_param('~position_bound')))
+        self.assertLessEqual(verdict.elapsed, float(rospy.get_param('~arrival_time')))
+
+    def test_04_unreachable(self):
+        """A goal out of reach: a clear verdict (goal_result, /diagnostics WARN) and nothing moves:
+        the wheels stay at rest and the end-effector holds its pose."""
+        before = self.end_effector()[0]
+        diagnostics_index = self.diagnostics.count()
+        actuators_index = self.actuators.count()
+        verdict = self.send(self.unreachable)
+        self.assertEqual(verdict.status, FreebotGoalResult.UNREACHABLE, verdict.message)
+        self.assertIn('unreachable', verdict.message)
+        self.assertIn('beyond the reach', verdict.message)
+        self.assertGreater(verdict.position_error, 0.0)
+        wait_until(lambda: self.ik_status(diagnostics_index) is not None and
+                   self.ik_status(diagnostics_index).level == DiagnosticStatus.WARN,
+                   'freebot_ik to report WARN on /diagnostics')
+        self.assertIn('unreachable', self.ik_status(diagnostics_index).message)
+        sim_sleep(3.0)
+        fastest = max((abs(v) for m in self.actuators.since(actuators_index) for v in m.velocity),
+                      default=0.0)
+        moved = math.dist(before, self.end_effector()[0])
+        rospy.loginfo('after the unreachable goal: fastest wheel %.3g rad/s, end-effector moved '
+                      '%.3g m', fastest, moved)
+        self.assertGreater(self.actuators.count(), actuators_index + 100)
+        self.assertLess(fastest, 1e-9)
+        self.assertLess(moved, float(rospy.get_param('~hold_bound')))
+
+    def test_05_bad_measurements_kill_nothing(self):
+        """A NaN and an incomplete actuators/state are rejected, counted on /diagnostics, and the
+        plant keeps publishing."""
+        publisher = rospy.Publisher('actuators/state', JointState, queue_size=10)
+        names = ['module%d_wheel_%s' % (i, side) for i in range(1, self.modules + 1)
+                 for side in ('right', 'left')]
+        bad_nan = JointState(name=names, velocity=[float('nan')] + [0.0] * (len(names) - 1))
+        bad_missing = JointState(name=names[1:], velocity=[0.0] * (len(names) - 1))
+        key = rospy.resolve_name('actuators/state') + ' rejected'
+        deadline = time.time() + WALL_DEADLINE
+        while int(self.value(PLANT_STATUS, key) or 0) < 2:
+            self.assertLess(time.time(), deadline, 'the plant never reported 2 rejections')
+            publisher.publish(bad_nan)
+            publisher.publish(bad_missing)
+            time.sleep(0.2)
+        count = self.states.count()
+        sim_sleep(1.0)
+        self.assertGreater(self.states.count(), count + 50, 'freebot_state stopped')
+        self.assertTrue(all(math.isfinite(v) for v in self.end_effector()[0]))
+
+    def test_06_watchdog_when_ik_dies(self):
+        """Killing freebot_ik mid-motion: the hardware's watchdog brings every wheel to rest within
+        command_timeout + |v|/max_acceleration + one period of the last command, and the chain
+        stops."""
+        hardware = rospy.resolve_name('hardware_interface')
+        timeout = float(rospy.get_param(hardware + '/command_timeout'))
+        acceleration = float(rospy.get_param(hardware + '/max_acceleration'))
+        period = 1.0 / float(rospy.get_param(hardware + '/rate'))
+        commands = Recorder('actuators/command', JointState)
+        count = self.results.count()
+        goal = PoseStamped()
+        goal.header.frame_id = 'world'
+        goal.pose = pose_of(self.reachable)
+        self.goal_pub.publish(goal)
+        wait_until(lambda: any(r.status == FreebotGoalResult.MOVING for r in self.results.since(count)),
+                   'freebot_ik to start moving')
+        wait_until(lambda: max(abs(v) for v in self.actuators.since(-1)[0].velocity) > 1.0,
+                   'a wheel faster than 1 rad/s')
+        speed = max(abs(v) for v in self.actuators.since(-1)[0].velocity)
+        node = rospy.resolve_name('freebot_ik')
+        rosnode.kill_nodes([node])
+        wait_until(lambda: not rosnode.rosnode_ping(node, max_count=1), 'freebot_ik to die')
+        wait_until(lambda: commands.count() > 0, 'a recorded command')
+        last_command = commands.messages[-1][0]
+
+        def first_at_rest():
+            with self.actuators.lock:
+                return next((m.header.stamp.to_sec() for _, m in self.actuators.messages
+                             if m.header.stamp.to_sec() >= last_command and
+                             all(v == 0.0 for v in m.velocity)), None)
+        wait_until(lambda: first_at_rest() is not None, 'every wheel at rest')
+        at_rest = first_at_rest() - last_command
+        bound = timeout + speed / acceleration + period
+        sim_sleep(0.5)
+        before = self.end_effector()[0]
+        sim_sleep(1.0)
+        moved = math.dist(before, self.end_effector()[0])
+        rospy.loginfo('watchdog: wheels at rest %.3f s (simulated) after the last command (bound '
+                      '%.3f s from %.2f rad/s), then the end-effector moved %.3g m', at_rest,
+                      bound, speed, moved)
+        self.assertLess(at_rest, bound + SLACK)
+        self.assertGreater(at_rest, timeout - SLACK, 'the watchdog fired early')
+        self.assertLess(moved, 1e-12)
+
+
+if __name__ == '__main__':
+    rospy.init_node(NAME)
+    rostest.rosrun(PKG, NAME, FreebotStackCheck)

@@ -1,0 +1,188 @@
+#include "spherical_robots/ros/freebot_plant_ros.hpp"
+
+#include <visualization_msgs/MarkerArray.h>
+
+#include <Eigen/Geometry>
+#include <sstream>
+#include <stdexcept>
+
+#include "spherical_robots/FreebotState.h"
+#include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/ros/ros_parameter_source.hpp"
+
+namespace spherical_robots {
+namespace {
+
+const std::string kWorldFrame = "world";
+constexpr double kTrolleyArrow = 0.02;  // [m] length of a trolley's heading arrow
+
+visualization_msgs::Marker marker(const std::string& frame, const ros::Time& stamp,
+                                  const std::string& ns, int id, int type) {
+  visualization_msgs::Marker m;
+  m.header.frame_id = frame;
+  m.header.stamp = stamp;
+  m.ns = ns;
+  m.id = id;
+  m.type = type;
+  m.action = visualization_msgs::Marker::ADD;
+  m.frame_locked = true;
+  m.pose.orientation.w = 1.0;
+  return m;
+}
+
+}  // namespace
+
+freebot::FreebotChain freebotChainFromParams(const ros::NodeHandle& nh) {
+  std::vector<double> radii;
+  if (!nh.getParam("radii", radii))
+    throw std::invalid_argument("parameter " + nh.resolveName("radii") +
+                                " (list of sphere radii [m], base first) is required");
+  freebot::TrolleyGeometry trolley;
+  trolley.wheel_radius = positiveParam(nh, "trolley/wheel_radius", trolley.wheel_radius);
+  trolley.wheel_interval = positiveParam(nh, "trolley/wheel_interval", trolley.wheel_interval);
+  trolley.shell_thickness = positiveParam(nh, "trolley/shell_thickness", trolley.shell_thickness);
+  try {
+    return freebot::FreebotChain(radii, trolley);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("parameters " + nh.resolveName("radii") + ", " +
+                                nh.resolveName("trolley") + ": " + e.what());
+  }
+}
+
+std::string freebotLinkFrame(const std::string& prefix, std::size_t i) {
+  return prefix + "link" + std::to_string(i);
+}
+
+FreebotPlantRos::FreebotPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
+    : chain_(freebotChainFromParams(nh)),
+      prefix_(stringParam(pnh, "frame_prefix", "")),
+      step_(positiveParam(pnh, "step", 0.01)),
+      duration_(numberParam(pnh, "duration", 0.0)),
+      publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
+      state_(chain_.alignedState()),
+      wheels_(chain_.moduleCount()),
+      actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.1)),
+      updater_(nh, pnh) {
+  actuator_sub_ = nh.subscribe("actuators/state", 10, &FreebotPlantRos::onActuatorState, this);
+  state_pub_ = nh.advertise<spherical_robots::FreebotState>("freebot_state", 10);
+  marker_pub_ = nh.advertise<visualization_msgs::MarkerArray>("freebot_markers", 10);
+  updater_.setHardwareID("FreeBOT");
+  updater_.add("freebot plant", this, &FreebotPlantRos::diagnose);
+
+  std::ostringstream radii;
+  for (double r : chain_.manipulator().radii()) radii << (radii.tellp() > 0 ? ", " : "") << r;
+  ROS_INFO_STREAM("FreeBOT chain: " << chain_.moduleCount() << " modules, radii [" << radii.str()
+                                    << "] m, reach " << chain_.manipulator().reach()
+                                    << " m; step " << step_ << " s");
+  const bool publish_clock = boolParam(pnh, "publish_clock", false);
+  const double speedup = publish_clock ? numberParam(pnh, "speedup", 1.0) : 0.0;
+  const int expected_subscribers = static_cast<int>(numberParam(pnh, "wait_for_subscribers", 1.0));
+  clock_ = std::make_unique<SimClock>(
+      nh, step_, speedup, [this](const ros::Time& now) { tick(now); },
+      [this, expected_subscribers] {
+        return static_cast<int>(state_pub_.getNumSubscribers()) >= expected_subscribers &&
+               actuator_sub_.getNumPublishers() > 0;
+      },
+      positiveParam(pnh, "start_timeout", 10.0));
+}
+
+void FreebotPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
+  try {
+    wheels_ = conversions::wheelSpeedsFromJointState(msg, chain_.moduleCount());
+    actuator_input_.accept(ros::Time::now());
+  } catch (const std::invalid_argument& e) {
+    actuator_input_.reject(e.what());
+  }
+}
+
+void FreebotPlantRos::tick(const ros::Time& now) {
+  if (finished_) return;
+  if (start_.isZero()) {
+    start_ = now;
+  } else if (now > last_tick_) {
+    const std::vector<freebot::WheelSpeeds> wheels =
+        actuator_input_.fresh(now) ? wheels_
+                                   : std::vector<freebot::WheelSpeeds>(chain_.moduleCount());
+    try {
+      state_ = chain_.advance(state_, wheels, (now - last_tick_).toSec());
+    } catch (const std::exception& e) {
+      ++integration_failures_;
+      ROS_ERROR_STREAM_THROTTLE(1.0, "Integration failed (" << integration_failures_
+                                                            << " so far), holding the last good "
+                                                               "state: " << e.what());
+    }
+  } else {
+    ROS_WARN_STREAM_THROTTLE(1.0, "ROS time went from " << last_tick_ << " back to " << now
+                                                        << " s; holding the state");
+  }
+  last_tick_ = now;
+  state_pub_.publish(conversions::toFreebotStateMsg(
+      state_, chain_.manipulator().endEffector(state_.joints), kWorldFrame, now));
+  if (periodDue(last_publish_, now, publish_period_)) publishFrames(now);
+  updater_.update();
+
+  if (duration_ > 0.0 && (now - start_).toSec() >= duration_ - 1e-9) {
+    ROS_INFO_STREAM("scenario complete after " << duration_ << " s");
+    finished_ = true;
+    ros::shutdown();
+  }
+}
+
+void FreebotPlantRos::publishFrames(const ros::Time& now) {
+  last_publish_ = now;
+  const auto& radii = chain_.manipulator().radii();
+  std::vector<geometry_msgs::TransformStamped> transforms;
+  transforms.push_back(conversions::toTransform(Eigen::Vector3d::Zero(),
+                                                Eigen::Quaterniond::Identity(), kWorldFrame,
+                                                freebotLinkFrame(prefix_, 0), now));
+  visualization_msgs::MarkerArray markers;
+  for (std::size_t i = 0; i <= chain_.moduleCount(); ++i) {
+    const std::string frame = freebotLinkFrame(prefix_, i);
+    auto sphere = marker(frame, now, "spheres", static_cast<int>(i),
+                         visualization_msgs::Marker::SPHERE);
+    sphere.scale.x = sphere.scale.y = sphere.scale.z = 2.0 * radii[i];
+    sphere.color.r = i == 0 ? 0.5f : 0.2f;
+    sphere.color.g = i == 0 ? 0.5f : 0.5f;
+    sphere.color.b = i == 0 ? 0.5f : 0.9f;
+    sphere.color.a = 0.6f;
+    markers.markers.push_back(sphere);
+    if (i == 0) continue;
+    const freebot::SrcJoint& joint = chain_.manipulator().joint(i - 1);
+    const freebot::SrcJointState& state = state_.joints[i - 1];
+    transforms.push_back(conversions::toTransform(joint.position(state),
+                                                  freebot::SrcJoint::jointQuaternion(state),
+                                                  freebotLinkFrame(prefix_, i - 1), frame, now));
+    // The trolley at the contact point, heading φ_i in P_i (P_i relative to B_{i-1}: q̃_{i-1,2}).
+    auto trolley = marker(freebotLinkFrame(prefix_, i - 1), now, "trolleys", static_cast<int>(i),
+                          visualization_msgs::Marker::ARROW);
+    const Eigen::Quaterniond plane = state.base.conjugate();
+    trolley.pose.position = conversions::toPoint(plane * Eigen::Vector3d(0.0, 0.0, radii[i - 1]));
+    trolley.pose.orientation = conversions::toQuaternion(
+        plane * Eigen::AngleAxisd(state_.headings[i - 1], Eigen::Vector3d::UnitZ()));
+    trolley.scale.x = kTrolleyArrow;
+    trolley.scale.y = trolley.scale.z = 0.2 * kTrolleyArrow;
+    trolley.color.r = 1.0f;
+    trolley.color.g = 0.5f;
+    trolley.color.a = 1.0f;
+    markers.markers.push_back(trolley);
+  }
+  tf_broadcaster_.sendTransform(transforms);
+  marker_pub_.publish(markers);
+}
+
+void FreebotPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  const ros::Time now = ros::Time::now();
+  status.summary(diagnostic_msgs::DiagnosticStatus::OK, "integrating measured wheel speeds");
+  status.add("modules", chain_.moduleCount());
+  status.add("time since start [s]", (now - start_).toSec());
+  const freebot::LinkPose end = chain_.manipulator().endEffector(state_.joints);
+  status.addf("end-effector [m]", "%.6f, %.6f, %.6f", end.position.x(), end.position.y(),
+              end.position.z());
+  status.add("real-time factor", clock_->realTimeFactor());
+  status.add("integration failures", integration_failures_);
+  if (integration_failures_ > 0)
+    status.mergeSummary(diagnostic_msgs::DiagnosticStatus::ERROR, "integration failed");
+  actuator_input_.report(status, now);
+}
+
+}  // namespace spherical_robots
