@@ -147,7 +147,9 @@ TEST(FreebotChainTest, ClosedLoopReachesTargetsWithinTheLimits) {
     }
     ASSERT_TRUE(arrived) << "trial " << trial;
     EXPECT_LE(fastest, limits.max_wheel_speed + 1e-12);
-    if (trial % 2 == 1) EXPECT_GT(fastest, 0.999 * limits.max_wheel_speed);
+    if (trial % 2 == 1) {
+      EXPECT_GT(fastest, 0.999 * limits.max_wheel_speed);
+    }
     const auto reached = chain.manipulator().endEffector(state.joints);
     const auto wanted = chain.manipulator().endEffector(targets);
     // Three contact arcs within 2 µm each on 34 mm spheres, levers below 0.21 m.
