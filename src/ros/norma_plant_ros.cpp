@@ -169,8 +169,9 @@ void NormaPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status
   status.add("delta [m]", state_.q(3));
   status.add("real-time factor", clock_->realTimeFactor());
   status.add("integration failures", integration_failures_);
-  if (integration_failures_ > 0)
+  if (integration_failures_ > failures_at_last_report_)
     status.mergeSummary(diagnostic_msgs::DiagnosticStatus::ERROR, "integration failed");
+  failures_at_last_report_ = integration_failures_;
   // The slider leaves the shaft's ends (|delta0 + delta| > R): the model no longer holds.
   const auto& p = dynamics_.parameters();
   if (std::abs(p.delta0 + state_.q(3)) > p.R)

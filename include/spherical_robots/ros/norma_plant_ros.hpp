@@ -50,6 +50,7 @@ class NormaPlantRos {
   double torque_ = 0.0;  ///< measured T [N m]
   double force_ = 0.0;   ///< measured F [N]
   unsigned long integration_failures_ = 0;
+  unsigned long failures_at_last_report_ = 0;
   ros::Time start_;
   ros::Time last_tick_;
   ros::Time last_publish_;
