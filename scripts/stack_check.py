@@ -389,7 +389,9 @@ class RollerCheck(SeamCheck):
 
     def test_00_slip_is_eq_28(self):
         drives = Recorder('roller_drive', RollerDrive)
-        wait_until(lambda: drives.count() >= 100, '100 roller_drive messages')
+        # 10 s of simulated time at 100 Hz: the catch-up from the origin, where the rollers turn
+        # hardest, starts whenever the controller's first command arrives.
+        wait_until(lambda: drives.count() >= 1000, '1000 roller_drive messages')
         alpha1 = math.radians(float(rospy.get_param('roller/alpha1_deg')))
         alpha2 = math.radians(float(rospy.get_param('roller/alpha2_deg')))
         largest = 0.0
