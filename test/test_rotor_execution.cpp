@@ -1,0 +1,140 @@
+// Executing a plan through the rotors (plan_execution.hpp): the curve timing against its own
+// definition (θ(t) integrates θ̇(t), ends at 2πn), the set-points against eq 11 at the planned
+// heading and place, the plant against rigid-body rolling in closed form, and the sampled
+// (zero-order hold) execution against the plan's target as the period shrinks.
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <stdexcept>
+
+#include "spherical_robots/rotor/contact_curve.hpp"
+#include "spherical_robots/rotor/contact_kinematics.hpp"
+#include "spherical_robots/rotor/dynamic_realizability.hpp"
+#include "spherical_robots/rotor/figure_eight.hpp"
+#include "spherical_robots/rotor/geometric_phase.hpp"
+#include "spherical_robots/rotor/motion_planner.hpp"
+#include "spherical_robots/rotor/plan_execution.hpp"
+
+namespace {
+
+using namespace spherical_robots::rotor;
+
+constexpr double kScale = 12.0;  // J_zz / J_r
+
+double endError(const ContactCoordinates& x, double u, double v, double psi) {
+  return std::max({std::abs(x.u_a - u), std::abs(x.v_a - v), std::abs(x.psi - psi),
+                   std::abs(x.u_o), std::abs(x.v_o)});
+}
+
+TEST(RotorExecution, CurveTimingIntegratesItsRate) {
+  const CurveTiming timing(3, 1.5, 2.0);
+  const double total = 6 * M_PI;
+  EXPECT_NEAR(timing.duration(), total / 1.5 + 2.0, 1e-12);
+  EXPECT_EQ(timing.theta(-1.0), 0.0);
+  EXPECT_NEAR(timing.theta(timing.duration()), total, 1e-12);
+  EXPECT_EQ(timing.rate(0.0), 0.0);
+  EXPECT_EQ(timing.rate(timing.duration()), 0.0);
+  EXPECT_NEAR(timing.rate(5.0), 1.5, 1e-12);
+  // θ(t) = ∫ θ̇ by the trapezoid rule, and θ̇ = dθ/dt by central differences, everywhere
+  // (across both ramp joints).
+  double integral = 0.0;
+  const int n = 200000;
+  const double dt = timing.duration() / n;
+  for (int i = 0; i < n; ++i) {
+    const double t = i * dt;
+    integral += 0.5 * dt * (timing.rate(t) + timing.rate(t + dt));
+    if (i % 1000 == 0 && i > 0) {
+      EXPECT_NEAR(integral, timing.theta(t + dt), 1e-8) << "t = " << t + dt;
+      EXPECT_NEAR((timing.theta(t + 1e-6) - timing.theta(t - 1e-6)) / 2e-6, timing.rate(t), 1e-6)
+          << "t = " << t;
+    }
+  }
+  EXPECT_NEAR(integral, total, 1e-8);
+  // Largest θ̈ = π M / (2 ramp) at mid-ramp.
+  EXPECT_NEAR((timing.rate(1.0 + 1e-6) - timing.rate(1.0 - 1e-6)) / 2e-6, M_PI * 1.5 / 4.0, 1e-6);
+  EXPECT_THROW(CurveTiming(0, 1.0, 0.0), std::invalid_argument);
+  EXPECT_THROW(CurveTiming(1, 0.0, 0.0), std::invalid_argument);
+  EXPECT_THROW(CurveTiming(1, 1.0, -1.0), std::invalid_argument);
+  EXPECT_THROW(CurveTiming(1, 1.0, 7.0), std::invalid_argument);  // 1 rad/s x 7 s > 2π
+}
+
+TEST(RotorExecution, SetPointsAreEq11AtThePlannedHeadingAndPlace) {
+  // The set-point uses ψ = 0 at the origin; eq 11 at the heading and place the plan actually has
+  // there (integrated by the planner's own integrator) must give the same speeds.
+  const double k = 2.5, rate = 0.8;
+  const FigureEight curve(0.4, 0.55, 0.7);
+  for (const double theta : {0.0, 0.3, 1.7, M_PI, 3.5, 5.9, 2 * M_PI, 2 * M_PI + 2.0}) {
+    const int step = theta > 2 * M_PI ? 1 : 0;
+    const double local = theta - 2 * M_PI * step;
+    const bool second = local > M_PI;
+    const PlaneState start = step == 0 ? PlaneState{} : integrateSteps(k, curve, 1);
+    const PlaneState at = integrateFigureEight(k, curve, 0.0, local, start);
+    const CurvePoint c = curve.onLeaf(second, local);
+    const Eigen::Vector2d angles = contactAngles(c.point);
+    const ContactCoordinates planned{at.u_a, at.v_a, angles.x(), angles.y(), at.psi};
+    const RotorSpeeds truth =
+        rotorSpeeds(k, kScale, planned, curveAngularVelocity(k, c, at.psi, rate));
+    const RotorSpeeds speeds = planSetPoint(k, kScale, curve, 2, theta, rate);
+    EXPECT_NEAR(speeds.phi1, truth.phi1, 1e-9) << "theta " << theta;
+    EXPECT_NEAR(speeds.phi2, truth.phi2, 1e-9) << "theta " << theta;
+  }
+  EXPECT_THROW(planSetPoint(k, kScale, curve, 2, 4 * M_PI + 0.1, rate), std::invalid_argument);
+  EXPECT_THROW(planSetPoint(k, kScale, curve, 0, 1.0, rate), std::invalid_argument);
+  // The peak scales the speeds at θ̇ = 1.
+  const double peak = peakRotorSpeed(k, kScale, curve);
+  for (int i = 0; i <= 100; ++i) {
+    const RotorSpeeds s = planSetPoint(k, kScale, curve, 1, 2 * M_PI * i / 100, 1.0);
+    EXPECT_LE(std::max(std::abs(s.phi1), std::abs(s.phi2)), peak + 1e-12);
+  }
+}
+
+TEST(RotorExecution, HeldRotorSpeedsRollTheSphereStraight) {
+  // From the zero state one rotor alone gives ω along a horizontal body axis that stays
+  // horizontal: the rigid body turns by R_y(w t) (R_x(w t)) and the centre moves by ω × (0, 0, R).
+  const double k = 2.0, w = 0.3, t = 2.5;
+  // ω = −(1/s) diag(1/k, 1/k, 1) n2 φ̇2 with n2 = y: φ̇2 = −s k w gives ω = (0, w, 0).
+  const ContactCoordinates y_roll =
+      advancePlant(k, kScale, {}, {0.0, -kScale * k * w}, t, 1e-3);
+  EXPECT_NEAR(y_roll.u_a, w * t, 1e-10);
+  EXPECT_NEAR(y_roll.v_a, 0.0, 1e-12);
+  EXPECT_LE((orientation(y_roll.u_o, y_roll.v_o, y_roll.psi) -
+             Eigen::AngleAxisd(w * t, Eigen::Vector3d::UnitY()).toRotationMatrix()).norm(), 1e-10);
+  const ContactCoordinates x_roll =
+      advancePlant(k, kScale, {}, {-kScale * k * w, 0.0}, t, 1e-3);
+  EXPECT_NEAR(x_roll.u_a, 0.0, 1e-12);
+  EXPECT_NEAR(x_roll.v_a, -w * t, 1e-10);
+  EXPECT_LE((orientation(x_roll.u_o, x_roll.v_o, x_roll.psi) -
+             Eigen::AngleAxisd(w * t, Eigen::Vector3d::UnitX()).toRotationMatrix()).norm(), 1e-10);
+  EXPECT_THROW(advancePlant(k, kScale, {}, {0.0, 1.0}, -1.0, 1e-3), std::invalid_argument);
+  EXPECT_THROW(advancePlant(k, kScale, {}, {0.0, 1.0}, 1.0, 0.0), std::invalid_argument);
+}
+
+TEST(RotorExecution, SampledExecutionConvergesToTheTarget) {
+  // The ROS loop streams set-points at a fixed rate and holds them: the end error against the
+  // target (the truth) falls with the period, and the continuous execution ends on it. The
+  // numbers bound the rostest's tolerance (docs/results.md).
+  const double k = 2.5;
+  const PlanRequest request{k, 2, 0.5, 0.3, 0.4, 0.7, 0};
+  const PlanResult result = planRotorMotion(request);
+  ASSERT_FALSE(result.solutions.empty()) << result.reason;
+  const RotorPlan& plan = result.solutions.front();
+  const FigureEight curve(plan.a, plan.b, plan.gamma);
+  const CurveTiming timing(request.steps, 1.0, 1.0);
+  const ContactCoordinates exact = executePlan(k, kScale, curve, timing, 0.0);
+  EXPECT_LE(endError(exact, 0.5, 0.3, 0.4), 1e-8);
+  const double coarse = endError(executePlan(k, kScale, curve, timing, 0.01, 0.5), 0.5, 0.3, 0.4);
+  const double fine = endError(executePlan(k, kScale, curve, timing, 0.001, 0.5), 0.5, 0.3, 0.4);
+  std::printf("end error [R]: period 10 ms %.3g, 1 ms %.3g\n", coarse, fine);
+  EXPECT_LE(coarse, 1e-3);
+  EXPECT_LE(fine, 0.2 * coarse);  // at least first order
+  EXPECT_THROW(executePlan(k, kScale, curve, timing, -0.01), std::invalid_argument);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
