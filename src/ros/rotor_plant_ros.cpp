@@ -27,7 +27,7 @@ RotorPlantRos::RotorPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       step_(positiveParam(pnh, "step", 0.001)),
       duration_(numberParam(pnh, "duration", 0.0)),
       publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
-      actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.05)),
+      actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.5)),
       updater_(nh, pnh) {
   actuator_sub_ = nh.subscribe("actuators/state", 10, &RotorPlantRos::onActuatorState, this);
   odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);

@@ -23,7 +23,9 @@ namespace spherical_robots {
 /// Private (~): sphere_radius R [m] (0.1); frame_prefix (""); step [s] (0.001): the tick and the RK4 step; publish_rate [Hz]
 /// (50): odom, joint_states, tf; publish_clock (false), speedup (1), wait_for_subscribers (1),
 /// start_timeout [s] (10): as terrain_kinematics; duration [s] (0 = forever); state_timeout [s]
-/// (0.05): older measured speeds count as zero.
+/// (0.5): the rotors keep the last measured speeds (a late state message does not stop them:
+/// the flywheels spin on); older ones count as zero, as the hardware interface's command_timeout
+/// brings the rotors to rest.
 /// Subscribes actuators/state (velocities of rotor_1 about the sphere's x axis n1 and rotor_2
 /// about n2 [rad/s], and their positions). Publishes odom (frame world, child <prefix>base_link:
 /// the centre (R u_a, R v_a, R) and orientation R_zᵀ(ψ) R_xᵀ(v_o) R_yᵀ(u_o) of eq 2), tf
