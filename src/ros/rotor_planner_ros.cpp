@@ -40,6 +40,7 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       command_period_(1.0 / positiveParam(pnh, "command_rate", 100.0)),
       max_rotor_speed_(numberParam(pnh, "max_rotor_speed", 0.0)),
       settle_(numberParam(pnh, "settle", 1.0)),
+      actuator_time_constant_(numberParam(pnh, "actuator_time_constant", 0.0)),
       path_period_(positiveParam(pnh, "path_period", 0.05)) {
   if (samples_per_step_ < 1) {
     throw std::invalid_argument("parameter " + pnh.resolveName("samples_per_step") +
@@ -52,9 +53,11 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   }
   path_pub_ = nh.advertise<nav_msgs::Path>("planned_path", 1, true);
   marker_pub_ = nh.advertise<visualization_msgs::Marker>("contact_curve", 1, true);
-  if (ramp_time_ < 0.0 || settle_ < 0.0 || max_rotor_speed_ < 0.0) {
+  if (ramp_time_ < 0.0 || settle_ < 0.0 || max_rotor_speed_ < 0.0 ||
+      actuator_time_constant_ < 0.0) {
     throw std::invalid_argument("parameters " + pnh.resolveName("ramp_time") + ", " +
-                                pnh.resolveName("settle") + " and " +
+                                pnh.resolveName("settle") + ", " +
+                                pnh.resolveName("actuator_time_constant") + " and " +
                                 pnh.resolveName("max_rotor_speed") + " must be >= 0");
   }
   service_ = pnh.advertiseService("plan", &RotorPlannerRos::onPlan, this);
@@ -198,8 +201,9 @@ void RotorPlannerRos::onCommandTimer(const ros::TimerEvent&) {
   const double end = execution_->timing.duration();
   if (t <= end + command_period_) {
     // One sample past the end: the timing is at rest there, so the last set-point is zero.
-    const rotor::RotorSpeeds speeds = rotor::planSetPointAt(
-        plan_k_, inertia_scale_, execution_->curve, execution_->timing, std::max(t, 0.0));
+    const rotor::RotorSpeeds speeds = rotor::lagCompensatedSetPoint(
+        plan_k_, inertia_scale_, execution_->curve, execution_->timing, std::max(t, 0.0),
+        actuator_time_constant_, command_period_);
     command_pub_.publish(conversions::velocityJointState(kRotors, {speeds.phi1, speeds.phi2}, now));
     return;
   }

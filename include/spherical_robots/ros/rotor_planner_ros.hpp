@@ -36,7 +36,9 @@ namespace spherical_robots {
 /// [s] (1)) and streams the rotor set-points of eq 11 (rotor::planSetPointAt) every
 /// 1/~command_rate [s] (100 Hz, ROS time) on actuators/command (sensor_msgs/JointState velocities
 /// of rotor_1, rotor_2 [rad/s]), then one zero. If the plan's peak rotor speed at ~curve_rate
-/// exceeds ~max_rotor_speed [rad/s] (0: no limit) the curve rate is lowered to fit. Parameter
+/// exceeds ~max_rotor_speed [rad/s] (0: no limit) the curve rate is lowered to fit. With
+/// ~actuator_time_constant τ [s] (0) > 0 the set-points carry the feed-forward inverse of a
+/// first-order actuator lag (rotor::lagCompensatedSetPoint), still open loop. Parameter
 /// rotor_inertia_scale J_zz / J_r (12) in the node handle's namespace. The plan starts wherever
 /// the sphere is: it reaches the target relative to the zero state only from the zero state.
 /// While executing and for ~settle [s] (1) after, it appends odom (nav_msgs/Odometry of the
@@ -74,6 +76,7 @@ class RotorPlannerRos {
   double command_period_;
   double max_rotor_speed_;
   double settle_;
+  double actuator_time_constant_;
   double path_period_;
   double plan_k_ = 0.0;
   int plan_steps_ = 0;

@@ -52,6 +52,15 @@ RotorSpeeds planSetPoint(double k, double inertia_scale, const FigureEight& curv
 RotorSpeeds planSetPointAt(double k, double inertia_scale, const FigureEight& curve,
                            const CurveTiming& timing, double t);
 
+/// The set-point at time t that makes rotors with a first-order lag of time_constant τ [s] >= 0
+/// follow the plan: the lag's inverse u = φ̇ + τ φ̈, φ̈ by a forward difference over h [s] > 0
+/// (the command period: u held over [t, t + h] brings the lagged speed to φ̇(t + h)). Dead time
+/// needs nothing: a delay only reparameterises the curve. τ = 0: planSetPointAt.
+/// @throw std::invalid_argument as planSetPointAt() or on a bad τ or h.
+RotorSpeeds lagCompensatedSetPoint(double k, double inertia_scale, const FigureEight& curve,
+                                   const CurveTiming& timing, double t, double time_constant,
+                                   double h);
+
 /// The largest |φ̇_i| [rad/s] along one step traced at θ̇ = 1 rad/s (speeds scale with θ̇),
 /// sampled at 2000 θ per leaf.
 double peakRotorSpeed(double k, double inertia_scale, const FigureEight& curve);
