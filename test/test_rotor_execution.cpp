@@ -62,23 +62,37 @@ TEST(RotorExecution, CurveTimingIntegratesItsRate) {
 
 TEST(RotorExecution, SetPointsAreEq11AtThePlannedHeadingAndPlace) {
   // The set-point uses ψ = 0 at the origin; eq 11 at the heading and place the plan actually has
-  // there (integrated by the planner's own integrator) must give the same speeds.
+  // there (integrated by the planner's own integrator) must give the same speeds. The leaves
+  // share θ by their radii, which keeps the contact speed, and so the set-points, continuous.
   const double k = 2.5, rate = 0.8;
   const FigureEight curve(0.4, 0.55, 0.7);
-  for (const double theta : {0.0, 0.3, 1.7, M_PI, 3.5, 5.9, 2 * M_PI, 2 * M_PI + 2.0}) {
+  // The first leaf (radius 0.4) takes 2π 0.4/0.95 of a step's θ, at dθ_leaf/dθ = 0.95/0.8.
+  const double split = 2 * M_PI * 0.4 / 0.95;
+  for (const double theta : {0.0, 0.3, 1.7, split, 3.5, 5.9, 2 * M_PI, 2 * M_PI + 2.0}) {
     const int step = theta > 2 * M_PI ? 1 : 0;
     const double local = theta - 2 * M_PI * step;
-    const bool second = local > M_PI;
+    const bool second = local > split;
+    const double leaf = second ? M_PI + (local - split) * 0.95 / 1.1 : local * 0.95 / 0.8;
+    const double leaf_rate = rate * (second ? 0.95 / 1.1 : 0.95 / 0.8);
     const PlaneState start = step == 0 ? PlaneState{} : integrateSteps(k, curve, 1);
-    const PlaneState at = integrateFigureEight(k, curve, 0.0, local, start);
-    const CurvePoint c = curve.onLeaf(second, local);
+    const PlaneState at = integrateFigureEight(k, curve, 0.0, leaf, start);
+    const CurvePoint c = curve.onLeaf(second, leaf);
     const Eigen::Vector2d angles = contactAngles(c.point);
     const ContactCoordinates planned{at.u_a, at.v_a, angles.x(), angles.y(), at.psi};
     const RotorSpeeds truth =
-        rotorSpeeds(k, kScale, planned, curveAngularVelocity(k, c, at.psi, rate));
+        rotorSpeeds(k, kScale, planned, curveAngularVelocity(k, c, at.psi, leaf_rate));
+    // The contact moves at (a + b) θ̇ on both leaves.
+    EXPECT_NEAR(c.tangent.norm() * leaf_rate, 0.95 * rate, 1e-12) << "theta " << theta;
     const RotorSpeeds speeds = planSetPoint(k, kScale, curve, 2, theta, rate);
     EXPECT_NEAR(speeds.phi1, truth.phi1, 1e-9) << "theta " << theta;
     EXPECT_NEAR(speeds.phi2, truth.phi2, 1e-9) << "theta " << theta;
+  }
+  // Continuous where the leaves meet and where the steps do.
+  for (const double joint : {split, 2 * M_PI, 2 * M_PI + split}) {
+    const RotorSpeeds before = planSetPoint(k, kScale, curve, 2, joint - 1e-9, rate);
+    const RotorSpeeds after = planSetPoint(k, kScale, curve, 2, joint + 1e-9, rate);
+    EXPECT_NEAR(before.phi1, after.phi1, 1e-6) << "theta " << joint;
+    EXPECT_NEAR(before.phi2, after.phi2, 1e-6) << "theta " << joint;
   }
   EXPECT_THROW(planSetPoint(k, kScale, curve, 2, 4 * M_PI + 0.1, rate), std::invalid_argument);
   EXPECT_THROW(planSetPoint(k, kScale, curve, 0, 1.0, rate), std::invalid_argument);

@@ -88,11 +88,19 @@ RotorSpeeds planSetPoint(double k, double inertia_scale, const FigureEight& curv
   }
   const int step = std::max(static_cast<int>(std::ceil(theta / (2.0 * M_PI))) - 1, 0);
   const double local = std::clamp(theta - 2.0 * M_PI * step, 0.0, 2.0 * M_PI);
-  const CurvePoint c = curve.onLeaf(local > M_PI, local);
+  // The leaf of radius a gets 2π a/(a + b) of the step's θ: the contact then runs at (a + b) θ̇
+  // on both leaves (2a dθ_leaf/dθ = 2b dθ_leaf/dθ = a + b), so the set-points do not step at
+  // the pole where the leaves meet.
+  const double split = 2.0 * M_PI * curve.a() / (curve.a() + curve.b());
+  const bool second = local > split;
+  const double leaf_rate = second ? M_PI / (2.0 * M_PI - split) : M_PI / split;  // dθ_leaf/dθ
+  const double leaf_theta = second ? M_PI + (local - split) * leaf_rate : local * leaf_rate;
+  const CurvePoint c = curve.onLeaf(second, std::clamp(leaf_theta, 0.0, 2.0 * M_PI));
   const Eigen::Vector2d angles = contactAngles(c.point);
   // ψ = 0 and the origin: the speeds are the same at every heading and place (header).
   const ContactCoordinates at{0.0, 0.0, angles.x(), angles.y(), 0.0};
-  return rotorSpeeds(k, inertia_scale, at, curveAngularVelocity(k, c, 0.0, theta_rate));
+  return rotorSpeeds(k, inertia_scale, at,
+                     curveAngularVelocity(k, c, 0.0, theta_rate * leaf_rate));
 }
 
 RotorSpeeds planSetPointAt(double k, double inertia_scale, const FigureEight& curve,

@@ -39,11 +39,12 @@ class CurveTiming {
   double ramp_time_;
 };
 
-/// The plan's rotor set-point [rad/s] at curve parameter θ ∈ [0, 2πn] traced at rate θ̇ [rad/s]:
-/// eq 11 (rotorSpeeds) on curveAngularVelocity at the step's θ mod 2π (the leaf that θ is on;
-/// θ = 2πj for j >= 1 is the end of step j's second leaf). The speeds jump at the pole between
-/// leaves by the ratio of the radii (each leaf's circle angle is 2θ, so the contact moves at 2a,
-/// then 2b): rate-limited rotors lag there.
+/// The plan's rotor set-point [rad/s] at execution parameter θ ∈ [0, 2πn] advancing at rate θ̇
+/// [rad/s]: eq 11 (rotorSpeeds) on curveAngularVelocity. Within a step (θ mod 2π; θ = 2πj for
+/// j >= 1 is the end of step j) the first leaf takes θ ∈ [0, 2πa/(a + b)] and the second the
+/// rest, each mapped linearly onto its FigureEight interval, so the contact moves at (a + b) θ̇
+/// on both leaves and the set-points are continuous at the pole (the FigureEight's own θ,
+/// circle angle 2θ on each leaf, would step them by the ratio b/a there).
 /// @throw std::invalid_argument as rotorSpeeds(), or if θ is outside [0, 2πn] or steps < 1.
 RotorSpeeds planSetPoint(double k, double inertia_scale, const FigureEight& curve, int steps,
                          double theta, double theta_rate);
