@@ -177,7 +177,9 @@ void RotorPlannerRos::onExecute(const std_msgs::UInt32& msg) {
                                                                 << peak * curve_rate_ << " > "
                                                                 << max_rotor_speed_ << " rad/s");
     }
-    const rotor::CurveTiming timing(plan_steps_, rate, std::min(ramp_time_, 2.0 * M_PI * plan_steps_ / rate));
+    // Short manoeuvres at high rates shorten the ramps to fit.
+    const rotor::CurveTiming timing(plan_steps_, rate,
+                                    std::min(ramp_time_, 2.0 * M_PI * plan_steps_ / rate));
     execution_ = Execution{msg.data, curve, timing, ros::Time::now()};
     ROS_INFO_STREAM("rotor_planner: executing plan " << msg.data << " (" << plan_steps_
                                                      << " steps, theta rate " << rate

@@ -20,9 +20,9 @@ namespace spherical_robots {
 
 /// Parameters in the node handle's namespace (shared with rotor_planner): inertia_ratio k (2.5,
 /// > 0), rotor_inertia_scale J_zz / J_r (12).
-/// Private (~): sphere_radius R [m] (0.1); frame_prefix (""); step [s] (0.001): the tick and the RK4 step; publish_rate [Hz]
-/// (50): odom, joint_states, tf; publish_clock (false), speedup (1), wait_for_subscribers (1),
-/// start_timeout [s] (10): as terrain_kinematics; duration [s] (0 = forever); state_timeout [s]
+/// Private (~): sphere_radius R [m] (0.1); frame_prefix (""); step [s] (0.001): the tick and
+/// the RK4 step; publish_rate [Hz] (50): odom, joint_states, tf; publish_clock (false),
+/// speedup (1), wait_for_subscribers (1), start_timeout [s] (10): as terrain_kinematics; duration [s] (0 = forever); state_timeout [s]
 /// (0.5): the rotors keep the last measured speeds (a late state message does not stop them:
 /// the flywheels spin on); older ones count as zero, as the hardware interface's command_timeout
 /// brings the rotors to rest.
