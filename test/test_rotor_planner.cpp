@@ -8,7 +8,6 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
-#include <boost/numeric/odeint.hpp>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -19,6 +18,7 @@
 #include "spherical_robots/rotor/figure_eight.hpp"
 #include "spherical_robots/rotor/geometric_phase.hpp"
 #include "spherical_robots/rotor/motion_planner.hpp"
+#include "spherical_robots/rotor/plan_execution.hpp"
 
 namespace {
 
@@ -206,44 +206,21 @@ TEST(RotorPlanner, ZeroTargetAndPureTurns) {
 TEST(RotorPlanner, ExecutingAPlanThroughTheRotorsReachesTheTarget) {
   // Open loop at θ̇ = 1 rad/s: rotor set-points from the plan (eq 11 on the planned ω), and a
   // plant that knows only the rotor speeds: ω from eq 11 solved for ω, contact coordinates from
-  // Montana's eqs 6-10 (not the curve form the planner integrates).
+  // Montana's eqs 6-10 (not the curve form the planner integrates). The target is the truth.
   const double k = 2.5, scale = 12.0;
   const PlanRequest request{k, 2, 0.5, 0.3, 0.4, 0.7, 0};
   const PlanResult result = planRotorMotion(request);
   ASSERT_FALSE(result.solutions.empty()) << result.reason;
   const RotorPlan& plan = result.solutions.front();
   const FigureEight curve(plan.a, plan.b, plan.gamma);
-  // State: the plan's (u_a, v_a, ψ) along the curve, then the plant's (u_a, v_a, u_o, v_o, ψ).
-  using State = std::array<double, 8>;
-  State x{};
-  for (int step = 0; step < request.steps; ++step) {
-    for (bool second : {false, true}) {
-      const auto rhs = [&](const State& s, State& dxdt, double theta) {
-        const CurvePoint c = curve.onLeaf(second, theta);
-        const PlaneState planned = realizableCurveRates(k, c, s[2]);
-        const Eigen::Vector2d angles = contactAngles(c.point);
-        const ContactCoordinates planned_at{s[0], s[1], angles.x(), angles.y(), s[2]};
-        const RotorSpeeds speeds =
-            rotorSpeeds(k, scale, planned_at, curveAngularVelocity(k, c, s[2], 1.0));
-        const ContactCoordinates plant_at{s[3], s[4], s[5], s[6], s[7]};
-        const ContactRates rates =
-            contactRates(plant_at, rotorAngularVelocity(k, scale, plant_at, speeds));
-        dxdt = {planned.u_a, planned.v_a, planned.psi, rates.u_a, rates.v_a,
-                rates.u_o,   rates.v_o,   rates.psi};
-      };
-      const double lo = second ? M_PI : 0.0;
-      // A different integrator from the planner's (Dormand-Prince 5(4)).
-      boost::numeric::odeint::integrate_adaptive(
-          boost::numeric::odeint::make_controlled<
-              boost::numeric::odeint::runge_kutta_dopri5<State>>(1e-12, 1e-12),
-          rhs, x, lo, lo + M_PI, 0.01);
-    }
-  }
-  EXPECT_NEAR(x[3], request.u_a, 1e-8);
-  EXPECT_NEAR(x[4], request.v_a, 1e-8);
-  EXPECT_NEAR(x[5], 0.0, 1e-8);  // back at the south pole
-  EXPECT_NEAR(x[6], 0.0, 1e-8);
-  EXPECT_NEAR(x[7], request.psi, 1e-8);
+  // executePlan (core, plan_execution.hpp) integrates the plant alone, Dormand-Prince 5(4).
+  const ContactCoordinates x =
+      executePlan(k, scale, curve, CurveTiming(request.steps, 1.0, 0.0), 0.0);
+  EXPECT_NEAR(x.u_a, request.u_a, 1e-8);
+  EXPECT_NEAR(x.v_a, request.v_a, 1e-8);
+  EXPECT_NEAR(x.u_o, 0.0, 1e-8);  // back at the south pole
+  EXPECT_NEAR(x.v_o, 0.0, 1e-8);
+  EXPECT_NEAR(x.psi, request.psi, 1e-8);
   // Rotor speeds and ω round-trip at a sample state.
   const ContactCoordinates at{0.1, 0.2, 0.3, -0.2, 0.7};
   const Eigen::Vector3d omega = curveAngularVelocity(k, curve.at(1.0), 0.7, 1.3);

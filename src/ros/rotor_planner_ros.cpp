@@ -4,11 +4,13 @@
 #include <visualization_msgs/Marker.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
+#include "spherical_robots/ros/sim_clock.hpp"
 #include "spherical_robots/rotor/contact_kinematics.hpp"
 #include "spherical_robots/rotor/figure_eight.hpp"
 #include "spherical_robots/rotor/geometric_phase.hpp"
@@ -20,15 +22,26 @@ namespace {
 constexpr double kDefaultRadius = 0.1;        // [m]
 constexpr double kDefaultMaxRadius = 0.7;     // [R], the default limit
 constexpr int kMarkerSamples = 400;
+const std::vector<std::string> kRotors = {"rotor_1", "rotor_2"};
+constexpr std::size_t kMaxDrivenPoses = 20000;
 
 }  // namespace
 
 RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
-    : radius_(positiveParam(pnh, "sphere_radius", kDefaultRadius)),
+    : nh_(nh),
+      radius_(positiveParam(pnh, "sphere_radius", kDefaultRadius)),
       max_radius_(positiveParam(pnh, "max_radius", kDefaultMaxRadius * radius_)),
       frame_id_(stringParam(pnh, "frame_id", "odom")),
       sphere_frame_(stringParam(pnh, "sphere_frame", "base_link")),
-      samples_per_step_(static_cast<int>(positiveParam(pnh, "samples_per_step", 200))) {
+      samples_per_step_(static_cast<int>(positiveParam(pnh, "samples_per_step", 200))),
+      inertia_scale_(positiveParam(nh, "rotor_inertia_scale", 12.0)),
+      curve_rate_(positiveParam(pnh, "curve_rate", 1.0)),
+      ramp_time_(numberParam(pnh, "ramp_time", 1.0)),
+      command_period_(1.0 / positiveParam(pnh, "command_rate", 100.0)),
+      max_rotor_speed_(numberParam(pnh, "max_rotor_speed", 0.0)),
+      settle_(numberParam(pnh, "settle", 1.0)),
+      actuator_time_constant_(numberParam(pnh, "actuator_time_constant", 0.0)),
+      path_period_(positiveParam(pnh, "path_period", 0.05)) {
   if (samples_per_step_ < 1) {
     throw std::invalid_argument("parameter " + pnh.resolveName("samples_per_step") +
                                 " must be >= 1");
@@ -40,7 +53,19 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   }
   path_pub_ = nh.advertise<nav_msgs::Path>("planned_path", 1, true);
   marker_pub_ = nh.advertise<visualization_msgs::Marker>("contact_curve", 1, true);
+  if (ramp_time_ < 0.0 || settle_ < 0.0 || max_rotor_speed_ < 0.0 ||
+      actuator_time_constant_ < 0.0) {
+    throw std::invalid_argument("parameters " + pnh.resolveName("ramp_time") + ", " +
+                                pnh.resolveName("settle") + ", " +
+                                pnh.resolveName("actuator_time_constant") + " and " +
+                                pnh.resolveName("max_rotor_speed") + " must be >= 0");
+  }
   service_ = pnh.advertiseService("plan", &RotorPlannerRos::onPlan, this);
+  command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", 10);
+  driven_pub_ = nh.advertise<nav_msgs::Path>("driven_path", 1, true);
+  done_pub_ = nh.advertise<std_msgs::UInt32>("execution_done", 1, true);
+  execute_sub_ = pnh.subscribe("execute", 1, &RotorPlannerRos::onExecute, this);
+  odom_sub_ = nh.subscribe("odom", 10, &RotorPlannerRos::onOdometry, this);
   ROS_INFO_STREAM("rotor_planner: R = " << radius_ << " m, circle radii up to " << max_radius_
                                         << " m; service " << service_.getService());
 }
@@ -78,6 +103,11 @@ bool RotorPlannerRos::onPlan(spherical_robots::PlanRotorMotion::Request& request
     ROS_WARN_STREAM("rotor_planner: " << result.reason);
     return true;
   }
+  plan_k_ = plan.k;
+  plan_steps_ = plan.steps;
+  plans_.clear();
+  for (const rotor::RotorPlan& solution : result.solutions)
+    plans_.emplace_back(solution.a, solution.b, solution.gamma);
   const rotor::RotorPlan& best = result.solutions.front();
   ROS_INFO_STREAM("rotor_planner: " << result.solutions.size() << " plan(s); shortest a = "
                                     << best.a * radius_ << " m, b = " << best.b * radius_
@@ -116,6 +146,90 @@ void RotorPlannerRos::publishPlan(double k, int steps, double a, double b, doubl
         conversions::toPoint(radius_ * curve.at(2.0 * M_PI * i / kMarkerSamples).point));
   }
   marker_pub_.publish(marker);
+}
+
+void RotorPlannerRos::onExecute(const std_msgs::UInt32& msg) {
+  if (execution_) {
+    ROS_WARN_STREAM("rotor_planner: plan " << execution_->index
+                                           << " is still executing; ignoring execute " << msg.data);
+    return;
+  }
+  if (msg.data >= plans_.size()) {
+    ROS_WARN_STREAM("rotor_planner: execute " << msg.data << " refused: the last successful plan "
+                                              << "request has " << plans_.size() << " solution(s)");
+    return;
+  }
+  const rotor::FigureEight& curve = plans_[msg.data];
+  double robot_k = 0.0;
+  if (nh_.getParam("inertia_ratio", robot_k) && std::abs(robot_k - plan_k_) > 1e-9) {
+    ROS_WARN_STREAM("rotor_planner: the plan is for k = " << plan_k_ << " but the robot's "
+                                                          << nh_.resolveName("inertia_ratio")
+                                                          << " is " << robot_k
+                                                          << ": it will not reach the target");
+  }
+  try {
+    double rate = curve_rate_;
+    const double peak = rotor::peakRotorSpeed(plan_k_, inertia_scale_, curve);
+    if (max_rotor_speed_ > 0.0 && peak * rate > max_rotor_speed_) {
+      rate = max_rotor_speed_ / peak;
+      ROS_WARN_STREAM("rotor_planner: curve rate lowered from " << curve_rate_ << " to " << rate
+                                                                << " rad/s: peak rotor speed "
+                                                                << peak * curve_rate_ << " > "
+                                                                << max_rotor_speed_ << " rad/s");
+    }
+    // Short manoeuvres at high rates shorten the ramps to fit.
+    const rotor::CurveTiming timing(plan_steps_, rate,
+                                    std::min(ramp_time_, 2.0 * M_PI * plan_steps_ / rate));
+    execution_ = Execution{msg.data, curve, timing, ros::Time::now()};
+    ROS_INFO_STREAM("rotor_planner: executing plan " << msg.data << " (" << plan_steps_
+                                                     << " steps, theta rate " << rate
+                                                     << " rad/s, peak rotor speed " << peak * rate
+                                                     << " rad/s) for " << timing.duration()
+                                                     << " s");
+  } catch (const std::invalid_argument& error) {
+    ROS_WARN_STREAM("rotor_planner: execute " << msg.data << " refused: " << error.what());
+    return;
+  }
+  driven_.poses.clear();
+  last_driven_ = ros::Time();
+  command_timer_ = nh_.createTimer(ros::Duration(command_period_), &RotorPlannerRos::onCommandTimer,
+                                   this);
+}
+
+void RotorPlannerRos::onCommandTimer(const ros::TimerEvent&) {
+  if (!execution_) return;
+  const ros::Time now = ros::Time::now();
+  const double t = (now - execution_->start).toSec();
+  const double end = execution_->timing.duration();
+  if (t <= end + command_period_) {
+    // One sample past the end: the timing is at rest there, so the last set-point is zero.
+    const rotor::RotorSpeeds speeds = rotor::lagCompensatedSetPoint(
+        plan_k_, inertia_scale_, execution_->curve, execution_->timing, std::max(t, 0.0),
+        actuator_time_constant_, command_period_);
+    command_pub_.publish(conversions::velocityJointState(kRotors, {speeds.phi1, speeds.phi2}, now));
+    return;
+  }
+  if (t < end + settle_) return;
+  std_msgs::UInt32 done;
+  done.data = execution_->index;
+  ROS_INFO_STREAM("rotor_planner: plan " << done.data << " executed");
+  execution_.reset();
+  command_timer_.stop();
+  driven_pub_.publish(driven_);
+  done_pub_.publish(done);
+}
+
+void RotorPlannerRos::onOdometry(const nav_msgs::Odometry& msg) {
+  if (!execution_) return;
+  if (!periodDue(last_driven_, msg.header.stamp, path_period_)) return;
+  last_driven_ = msg.header.stamp;
+  geometry_msgs::PoseStamped pose;
+  pose.header = msg.header;
+  pose.pose = msg.pose.pose;
+  driven_.header = msg.header;
+  driven_.poses.push_back(pose);
+  if (driven_.poses.size() > kMaxDrivenPoses) driven_.poses.erase(driven_.poses.begin());
+  driven_pub_.publish(driven_);
 }
 
 }  // namespace spherical_robots

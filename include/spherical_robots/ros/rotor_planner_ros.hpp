@@ -2,11 +2,19 @@
 // The rotor_planner node: the two-rotor sphere's geometric-phase planner (Svinin et al.) as a
 // service, with the chosen plan published for rviz.
 
+#include <nav_msgs/Odometry.h>
+#include <nav_msgs/Path.h>
 #include <ros/ros.h>
+#include <std_msgs/UInt32.h>
 
+#include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "spherical_robots/PlanRotorMotion.h"
+#include "spherical_robots/rotor/figure_eight.hpp"
+#include "spherical_robots/rotor/plan_execution.hpp"
 
 namespace spherical_robots {
 
@@ -21,6 +29,22 @@ namespace spherical_robots {
 /// frame_id: the sphere's centre and orientation along all n steps from the origin) and
 /// contact_curve (visualization_msgs/Marker LINE_STRIP in sphere_frame: the figure eight on the
 /// sphere's surface).
+///
+/// Execution (open loop: set-points from the plan only): ~execute (std_msgs/UInt32, the index of
+/// a solution of the last successful ~plan, 0 = shortest) traces that plan's figure eight n times
+/// from rest to rest (rotor::CurveTiming: ~curve_rate θ̇ [rad/s] (1), sin² ramps of ~ramp_time
+/// [s] (1)) and streams the rotor set-points of eq 11 (rotor::planSetPointAt) every
+/// 1/~command_rate [s] (100 Hz, ROS time) on actuators/command (sensor_msgs/JointState velocities
+/// of rotor_1, rotor_2 [rad/s]), then one zero. If the plan's peak rotor speed at ~curve_rate
+/// exceeds ~max_rotor_speed [rad/s] (0: no limit) the curve rate is lowered to fit. With
+/// ~actuator_time_constant τ [s] (0) > 0 the set-points carry the feed-forward inverse of a
+/// first-order actuator lag (rotor::lagCompensatedSetPoint), still open loop. Parameter
+/// rotor_inertia_scale J_zz / J_r (12) in the node handle's namespace. The plan starts wherever
+/// the sphere is: it reaches the target relative to the zero state only from the zero state.
+/// While executing and for ~settle [s] (1) after, it appends odom (nav_msgs/Odometry of the
+/// plant) to driven_path (nav_msgs/Path, every ~path_period [s] (0.05)); then it publishes the
+/// index on execution_done (std_msgs/UInt32, latched). A request while executing, before any
+/// plan, or with a bad index is refused with a warning.
 class RotorPlannerRos {
  public:
   /// @throw std::invalid_argument on a bad parameter.
@@ -31,7 +55,11 @@ class RotorPlannerRos {
               spherical_robots::PlanRotorMotion::Response& response);
   /// Publishes the path and marker of the plan (a, b, γ in units of R) for inertia ratio k.
   void publishPlan(double k, int steps, double a, double b, double gamma);
+  void onExecute(const std_msgs::UInt32& msg);
+  void onCommandTimer(const ros::TimerEvent& event);
+  void onOdometry(const nav_msgs::Odometry& msg);
 
+  ros::NodeHandle nh_;
   double radius_;
   double max_radius_;
   std::string frame_id_;
@@ -40,6 +68,34 @@ class RotorPlannerRos {
   ros::ServiceServer service_;
   ros::Publisher path_pub_;
   ros::Publisher marker_pub_;
+
+  // Execution.
+  double inertia_scale_;
+  double curve_rate_;
+  double ramp_time_;
+  double command_period_;
+  double max_rotor_speed_;
+  double settle_;
+  double actuator_time_constant_;
+  double path_period_;
+  double plan_k_ = 0.0;
+  int plan_steps_ = 0;
+  std::vector<rotor::FigureEight> plans_;  ///< the last successful request's, in units of R
+  struct Execution {
+    std::uint32_t index;
+    rotor::FigureEight curve;
+    rotor::CurveTiming timing;
+    ros::Time start;
+  };
+  std::optional<Execution> execution_;
+  nav_msgs::Path driven_;
+  ros::Time last_driven_;
+  ros::Subscriber execute_sub_;
+  ros::Subscriber odom_sub_;
+  ros::Publisher command_pub_;
+  ros::Publisher driven_pub_;
+  ros::Publisher done_pub_;
+  ros::Timer command_timer_;
 };
 
 }  // namespace spherical_robots
