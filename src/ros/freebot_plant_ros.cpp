@@ -57,7 +57,7 @@ FreebotPlantRos::FreebotPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : chain_(freebotChainFromParams(nh)),
       prefix_(stringParam(pnh, "frame_prefix", "")),
       step_(positiveParam(pnh, "step", 0.01)),
-      duration_(numberParam(pnh, "duration", 0.0)),
+      timeline_(numberParam(pnh, "duration", 0.0)),
       publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
       state_(chain_.alignedState()),
       wheels_(chain_.moduleCount()),
@@ -96,34 +96,18 @@ void FreebotPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
 }
 
 void FreebotPlantRos::tick(const ros::Time& now) {
-  if (finished_) return;
-  if (start_.isZero()) {
-    start_ = now;
-  } else if (now > last_tick_) {
-    const std::vector<freebot::WheelSpeeds> wheels =
-        actuator_input_.fresh(now) ? wheels_
-                                   : std::vector<freebot::WheelSpeeds>(chain_.moduleCount());
-    try {
-      state_ = chain_.advance(state_, wheels, (now - last_tick_).toSec());
-    } catch (const std::exception& e) {
-      ++integration_failures_;
-      ROS_ERROR_STREAM_THROTTLE(1.0, "Integration failed (" << integration_failures_
-                                                            << " so far), holding the last good "
-                                                               "state: " << e.what());
-    }
-  } else {
-    ROS_WARN_STREAM_THROTTLE(1.0, "ROS time went from " << last_tick_ << " back to " << now
-                                                        << " s; holding the state");
-  }
-  last_tick_ = now;
+  if (timeline_.finished()) return;
+  const std::vector<freebot::WheelSpeeds> wheels =
+      actuator_input_.fresh(now) ? wheels_
+                                 : std::vector<freebot::WheelSpeeds>(chain_.moduleCount());
+  timeline_.tick(now, [&](double elapsed) { state_ = chain_.advance(state_, wheels, elapsed); });
   state_pub_.publish(conversions::toFreebotStateMsg(
       state_, chain_.manipulator().endEffector(state_.joints), kWorldFrame, now));
   if (periodDue(last_publish_, now, publish_period_)) publishFrames(now);
   updater_.update();
 
-  if (duration_ > 0.0 && (now - start_).toSec() >= duration_ - 1e-9) {
-    ROS_INFO_STREAM("scenario complete after " << duration_ << " s");
-    finished_ = true;
+  if (timeline_.complete(now)) {
+    ROS_INFO_STREAM("scenario complete after " << timeline_.duration() << " s");
     ros::shutdown();
   }
 }
@@ -174,14 +158,11 @@ void FreebotPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat
   const ros::Time now = ros::Time::now();
   status.summary(diagnostic_msgs::DiagnosticStatus::OK, "integrating measured wheel speeds");
   status.add("modules", chain_.moduleCount());
-  status.add("time since start [s]", (now - start_).toSec());
   const freebot::LinkPose end = chain_.manipulator().endEffector(state_.joints);
   status.addf("end-effector [m]", "%.6f, %.6f, %.6f", end.position.x(), end.position.y(),
               end.position.z());
   status.add("real-time factor", clock_->realTimeFactor());
-  status.add("integration failures", integration_failures_);
-  if (integration_failures_ > 0)
-    status.mergeSummary(diagnostic_msgs::DiagnosticStatus::ERROR, "integration failed");
+  timeline_.report(status, now);
   actuator_input_.report(status, now);
 }
 

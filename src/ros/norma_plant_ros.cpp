@@ -41,7 +41,7 @@ NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
                 parsedParam(pnh, "variant", "text", variantFromString)),
       base_frame_(stringParam(pnh, "frame_prefix", "") + "base_link"),
       step_(positiveParam(pnh, "step", 0.001)),
-      duration_(numberParam(pnh, "duration", 0.0)),
+      timeline_(numberParam(pnh, "duration", 0.0)),
       publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
       trail_period_(positiveParam(pnh, "trail_period", 0.5)),
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.05)),
@@ -79,33 +79,19 @@ void NormaPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
 }
 
 void NormaPlantRos::tick(const ros::Time& now) {
-  if (finished_) return;
+  if (timeline_.finished()) return;
   const bool fresh = actuator_input_.fresh(now);
-  if (start_.isZero()) {
-    start_ = now;
-  } else if (now > last_tick_) {
-    try {
-      state_ = norma::advanceWithHeldInputs(dynamics_, state_, fresh ? torque_ : 0.0,
-                                            fresh ? force_ : 0.0, (now - last_tick_).toSec(), step_);
-    } catch (const std::exception& e) {
-      ++integration_failures_;
-      ROS_ERROR_STREAM_THROTTLE(1.0, "Integration failed (" << integration_failures_
-                                                            << " so far), holding the last good "
-                                                               "state: " << e.what());
-    }
-  } else {
-    ROS_WARN_STREAM_THROTTLE(1.0, "ROS time went from " << last_tick_ << " back to " << now
-                                                        << " s; holding the state");
-  }
-  last_tick_ = now;
+  timeline_.tick(now, [&](double elapsed) {
+    state_ = norma::advanceWithHeldInputs(dynamics_, state_, fresh ? torque_ : 0.0,
+                                          fresh ? force_ : 0.0, elapsed, step_);
+  });
   publishState(now);
   if (periodDue(last_publish_, now, publish_period_)) publishPose(now);
   updater_.update();
 
-  if (duration_ > 0.0 && (now - start_).toSec() >= duration_ - 1e-9) {
-    ROS_INFO_STREAM("scenario complete after " << duration_ << " s, centre at (" << state_.x
-                                               << ", " << state_.y << ") m");
-    finished_ = true;
+  if (timeline_.complete(now)) {
+    ROS_INFO_STREAM("scenario complete after " << timeline_.duration() << " s, centre at ("
+                                               << state_.x << ", " << state_.y << ") m");
     ros::shutdown();
   }
 }
@@ -161,17 +147,13 @@ void NormaPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status
   const ros::Time now = ros::Time::now();
   status.summary(diagnostic_msgs::DiagnosticStatus::OK, "rolling");
   status.add("variant", dynamics_.variant() == norma::LagrangianVariant::kText ? "text" : "appendix");
-  status.add("time since start [s]", (now - start_).toSec());
   status.add("X [m]", state_.x);
   status.add("Y [m]", state_.y);
   status.add("psi [rad]", state_.psi);
   status.add("phi [rad]", state_.q(2));
   status.add("delta [m]", state_.q(3));
   status.add("real-time factor", clock_->realTimeFactor());
-  status.add("integration failures", integration_failures_);
-  if (integration_failures_ > failures_at_last_report_)
-    status.mergeSummary(diagnostic_msgs::DiagnosticStatus::ERROR, "integration failed");
-  failures_at_last_report_ = integration_failures_;
+  timeline_.report(status, now);
   // The slider leaves the shaft's ends (|delta0 + delta| > R): the model no longer holds.
   const auto& p = dynamics_.parameters();
   if (std::abs(p.delta0 + state_.q(3)) > p.R)

@@ -25,7 +25,7 @@ RotorPlantRos::RotorPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       radius_(positiveParam(pnh, "sphere_radius", 0.1)),
       base_frame_(stringParam(pnh, "frame_prefix", "") + "base_link"),
       step_(positiveParam(pnh, "step", 0.001)),
-      duration_(numberParam(pnh, "duration", 0.0)),
+      timeline_(numberParam(pnh, "duration", 0.0)),
       publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.5)),
       updater_(nh, pnh) {
@@ -60,35 +60,20 @@ void RotorPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
 }
 
 void RotorPlantRos::tick(const ros::Time& now) {
-  if (finished_) return;
+  if (timeline_.finished()) return;
   const bool fresh = actuator_input_.fresh(now);
-  if (start_.isZero()) {
-    start_ = now;
-  } else if (now > last_tick_) {
-    try {
-      state_ = rotor::advancePlant(k_, inertia_scale_, state_,
-                                   fresh ? speeds_ : rotor::RotorSpeeds{},
-                                   (now - last_tick_).toSec(), step_);
-    } catch (const std::exception& e) {
-      ++integration_failures_;
-      ROS_ERROR_STREAM_THROTTLE(1.0, "Integration failed (" << integration_failures_
-                                                            << " so far), holding the last good "
-                                                               "state: " << e.what());
-    }
-  } else {
-    ROS_WARN_STREAM_THROTTLE(1.0, "ROS time went from " << last_tick_ << " back to " << now
-                                                        << " s; holding the state");
-  }
-  last_tick_ = now;
+  timeline_.tick(now, [&](double elapsed) {
+    state_ = rotor::advancePlant(k_, inertia_scale_, state_,
+                                 fresh ? speeds_ : rotor::RotorSpeeds{}, elapsed, step_);
+  });
   if (periodDue(last_publish_, now, publish_period_)) publishPose(now);
   updater_.update();
 
-  if (duration_ > 0.0 && (now - start_).toSec() >= duration_ - 1e-9) {
-    ROS_INFO_STREAM("scenario complete after " << duration_ << " s, centre at ("
+  if (timeline_.complete(now)) {
+    ROS_INFO_STREAM("scenario complete after " << timeline_.duration() << " s, centre at ("
                                                << radius_ * state_.u_a << ", "
                                                << radius_ * state_.v_a << ") m, psi "
                                                << state_.psi << " rad");
-    finished_ = true;
     ros::shutdown();
   }
 }
@@ -123,16 +108,13 @@ void RotorPlantRos::publishPose(const ros::Time& now) {
 void RotorPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   const ros::Time now = ros::Time::now();
   status.summary(diagnostic_msgs::DiagnosticStatus::OK, "rolling");
-  status.add("time since start [s]", (now - start_).toSec());
   status.add("u_a [m]", radius_ * state_.u_a);
   status.add("v_a [m]", radius_ * state_.v_a);
   status.add("u_o [rad]", state_.u_o);
   status.add("v_o [rad]", state_.v_o);
   status.add("psi [rad]", state_.psi);
   status.add("real-time factor", clock_->realTimeFactor());
-  status.add("integration failures", integration_failures_);
-  if (integration_failures_ > 0)
-    status.mergeSummary(diagnostic_msgs::DiagnosticStatus::ERROR, "integration failed");
+  timeline_.report(status, now);
   actuator_input_.report(status, now);
 }
 

@@ -26,7 +26,7 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       base_frame_(stringParam(pnh, "frame_prefix", "") + "base_link"),
       heading_frame_(stringParam(pnh, "frame_prefix", "") + "heading"),
       step_(positiveParam(pnh, "step", 0.01)),
-      duration_(numberParam(pnh, "duration", 0.0)),
+      timeline_(numberParam(pnh, "duration", 0.0)),
       publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
       trail_period_(positiveParam(pnh, "trail_period", 0.5)),
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.5)),
@@ -73,43 +73,28 @@ void TerrainPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
 }
 
 void TerrainPlantRos::tick(const ros::Time& now) {
-  if (finished_) return;
+  if (timeline_.finished()) return;
   const terrain::DriveRates rates =
       actuator_input_.fresh(now) ? measured_ : terrain::DriveRates{};
-  if (start_.isZero()) {
-    start_ = now;
-  } else if (now > last_tick_) {
-    integrate((now - last_tick_).toSec(), rates);
-  } else {
-    ROS_WARN_STREAM_THROTTLE(1.0, "ROS time went from " << last_tick_ << " back to " << now
-                                                        << " s; holding the state");
-  }
-  last_tick_ = now;
+  timeline_.tick(now, [&](double elapsed) { integrate(elapsed, rates); });
 
   if (periodDue(last_publish_, now, publish_period_)) publishState(now, rates);
   if (periodDue(last_trail_, now, trail_period_)) extendTrail(now);
   updater_.update();
 
-  if (duration_ > 0.0 && (now - start_).toSec() >= duration_ - 1e-9) {
-    ROS_INFO_STREAM("scenario complete after " << duration_ << " s, contact point at ("
-                                          << state_.x << ", " << state_.y << ") m");
-    finished_ = true;
+  if (timeline_.complete(now)) {
+    ROS_INFO_STREAM("scenario complete after " << timeline_.duration()
+                                                << " s, contact point at (" << state_.x << ", "
+                                                << state_.y << ") m");
     ros::shutdown();
   }
 }
 
 void TerrainPlantRos::integrate(double elapsed, const terrain::DriveRates& rates) {
-  try {
-    const terrain::RollingState next =
-        terrain::advanceWithHeldRates(*kinematics_, {state_, orientation_}, rates, elapsed, step_);
-    state_ = next.state;
-    orientation_ = next.orientation;
-  } catch (const std::exception& e) {
-    ++integration_failures_;
-    ROS_ERROR_STREAM_THROTTLE(1.0, "Integration failed (" << integration_failures_
-                                                          << " so far), holding the last good state: "
-                                                          << e.what());
-  }
+  const terrain::RollingState next =
+      terrain::advanceWithHeldRates(*kinematics_, {state_, orientation_}, rates, elapsed, step_);
+  state_ = next.state;
+  orientation_ = next.orientation;
 }
 
 void TerrainPlantRos::publishState(const ros::Time& now, const terrain::DriveRates& rates) {
@@ -142,17 +127,12 @@ void TerrainPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat
   status.summary(diagnostic_msgs::DiagnosticStatus::OK, "rolling");
   status.add("robot type", terrain::toString(type_));
   status.add("contact model", terrain::toString(kinematics_->model()));
-  status.add("time since start [s]", (now - start_).toSec());
   status.add("x [m]", state_.x);
   status.add("y [m]", state_.y);
   status.add("psi [rad]", state_.psi);
   status.add("phi [rad]", state_.phi);
   status.add("real-time factor", clock_->realTimeFactor());
-  status.add("integration failures", integration_failures_);
-  if (integration_failures_ > failures_at_last_report_) {
-    status.mergeSummary(diagnostic_msgs::DiagnosticStatus::ERROR, "integration failed");
-  }
-  failures_at_last_report_ = integration_failures_;
+  timeline_.report(status, now);
   actuator_input_.report(status, now);
 }
 

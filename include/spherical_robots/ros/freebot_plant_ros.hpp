@@ -14,6 +14,7 @@
 
 #include "spherical_robots/freebot/freebot_chain.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/plant_timeline.hpp"
 #include "spherical_robots/ros/sim_clock.hpp"
 
 namespace spherical_robots {
@@ -49,15 +50,11 @@ class FreebotPlantRos {
   freebot::FreebotChain chain_;
   std::string prefix_;
   double step_;
-  double duration_;
+  PlantTimeline timeline_;
   double publish_period_;
   freebot::ChainState state_;
   std::vector<freebot::WheelSpeeds> wheels_;  ///< last measured [rad/s]
-  unsigned long integration_failures_ = 0;
-  ros::Time start_;
-  ros::Time last_tick_;
   ros::Time last_publish_;
-  bool finished_ = false;
   InputMonitor actuator_input_;
   ros::Subscriber actuator_sub_;
   ros::Publisher state_pub_;

@@ -14,6 +14,7 @@
 
 #include "spherical_robots/norma/norma_plant.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/plant_timeline.hpp"
 #include "spherical_robots/ros/sim_clock.hpp"
 
 namespace spherical_robots {
@@ -43,19 +44,14 @@ class NormaPlantRos {
   norma::NormaDynamics dynamics_;
   std::string base_frame_;
   double step_;
-  double duration_;
+  PlantTimeline timeline_;
   double publish_period_;
   double trail_period_;
   norma::NormaState state_;
   double torque_ = 0.0;  ///< measured T [N m]
   double force_ = 0.0;   ///< measured F [N]
-  unsigned long integration_failures_ = 0;
-  unsigned long failures_at_last_report_ = 0;
-  ros::Time start_;
-  ros::Time last_tick_;
   ros::Time last_publish_;
   ros::Time last_trail_;
-  bool finished_ = false;
   InputMonitor actuator_input_;
   ros::Subscriber actuator_sub_;
   ros::Publisher state_pub_;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/plant_timeline.hpp"
 #include "spherical_robots/ros/sim_clock.hpp"
 #include "spherical_robots/rotor/contact_kinematics.hpp"
 #include "spherical_robots/rotor/dynamic_realizability.hpp"
@@ -47,16 +48,12 @@ class RotorPlantRos {
   double radius_;
   std::string base_frame_;
   double step_;
-  double duration_;
+  PlantTimeline timeline_;
   double publish_period_;
   rotor::ContactCoordinates state_;
   rotor::RotorSpeeds speeds_;  ///< measured [rad/s]
   double positions_[2] = {0.0, 0.0};  ///< measured rotor angles [rad]
-  unsigned long integration_failures_ = 0;
-  ros::Time start_;
-  ros::Time last_tick_;
   ros::Time last_publish_;
-  bool finished_ = false;
   InputMonitor actuator_input_;
   ros::Subscriber actuator_sub_;
   ros::Publisher odom_pub_;

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/plant_timeline.hpp"
 #include "spherical_robots/ros/sim_clock.hpp"
 #include "spherical_robots/terrain/surface.hpp"
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
@@ -54,7 +55,7 @@ class TerrainPlantRos {
   std::string base_frame_;
   std::string heading_frame_;
   double step_;
-  double duration_;
+  PlantTimeline timeline_;
   double publish_period_;
   double trail_period_;
 
@@ -63,14 +64,9 @@ class TerrainPlantRos {
   terrain::TerrainState state_;
   Eigen::Quaterniond orientation_;  ///< shell (base_link) orientation, world <- body
   terrain::DriveRates measured_;
-  unsigned long integration_failures_ = 0;
-  unsigned long failures_at_last_report_ = 0;
 
-  ros::Time start_;
-  ros::Time last_tick_;
   ros::Time last_publish_;
   ros::Time last_trail_;
-  bool finished_ = false;
 
   InputMonitor actuator_input_;
   ros::Subscriber actuator_sub_;

@@ -1,0 +1,42 @@
+#pragma once
+// The time bookkeeping every plant node shares (terrain, Norma, rotor sphere, FreeBOT chain): the
+// first tick starts the scenario; each later tick advances the model by the ROS time elapsed since
+// the previous one, never backwards (a jump back in time holds the state); a model that throws
+// keeps its last good state and the failure is counted; after `duration` the scenario is complete.
+
+#include <diagnostic_updater/DiagnosticStatusWrapper.h>
+#include <ros/time.h>
+
+#include <functional>
+
+namespace spherical_robots {
+
+class PlantTimeline {
+ public:
+  /// @param duration [s] of ROS time after the first tick; 0 (or less): forever.
+  explicit PlantTimeline(double duration) : duration_(duration) {}
+
+  /// Calls advance(elapsed [s]) when ROS time moved forward since the previous tick (not on the
+  /// first); logs a jump back, and an exception from advance, at most once a second.
+  void tick(const ros::Time& now, const std::function<void(double elapsed)>& advance);
+
+  /// True once the duration has passed (the node logs and shuts down then); later ticks are to
+  /// be ignored.
+  bool complete(const ros::Time& now);
+  bool finished() const { return finished_; }
+  double duration() const { return duration_; }
+
+  /// Adds "time since start [s]" and "integration failures", and raises ERROR if the model
+  /// failed since the last report.
+  void report(diagnostic_updater::DiagnosticStatusWrapper& status, const ros::Time& now);
+
+ private:
+  double duration_;
+  ros::Time start_;
+  ros::Time last_tick_;
+  unsigned long failures_ = 0;
+  unsigned long failures_at_last_report_ = 0;
+  bool finished_ = false;
+};
+
+}  // namespace spherical_robots
