@@ -7,21 +7,25 @@
 #   scripts/make_fixture_bag.sh terrain [OUT.bag] [DURATION]  (test/data/terrain_3R_circle_fixture.bag, 25)
 #   scripts/make_fixture_bag.sh roller  [OUT.bag] [DURATION]  (test/data/roller_2R_circle_fixture.bag, 25)
 #   scripts/make_fixture_bag.sh norma   [OUT.bag] [DURATION]  (test/data/norma_paper_fixture.bag, 45)
+#   scripts/make_fixture_bag.sh rotor   [OUT.bag] [DURATION]  (test/data/rotor_k2.5_n2_fixture.bag, 14)
+#   scripts/make_fixture_bag.sh freebot [OUT.bag] [DURATION]  (test/data/freebot_ABC_fixture.bag, 20)
 #
 # Needs the built package (it sources install/setup.sh of the repository if roslaunch cannot find
 # spherical_robots). Runs its own master on a free port, so it can run beside another ROS master.
 # Kept topics: /tf, /tf_static, and under the stack's namespace what rviz and the bag tests read:
 # terrain: terrain_state, tracking_error, actuators/command, target, desired_path, trail,
 # terrain_marker (about 0.85 MB for 25 s); roller: the same plus roller_markers; norma:
-# tracking_error, target, desired_path, trail. Left out: odom, actuators/state, diagnostics,
-# cmd_vel, norma_state (1 kHz), which no test reads.
+# tracking_error, target, desired_path, trail; rotor: planned_path, contact_curve, driven_path;
+# freebot: freebot_markers, ik_target. Left out: odom, actuators/state, diagnostics,
+# cmd_vel, norma_state (1 kHz), freebot_state, joint_states (the tf they make is kept), which no
+# test reads.
 # Bag time = header stamp: the recorder stamps a message when it receives it, usually one 0.01 s
 # clock tick before the plant's stamp (the /clock update reaches it after the message), so rosbag
 # play would deliver terrain_state earlier than the live controller saw it. Latched messages and
 # messages stamped 0 keep their recorded time.
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/env.sh"
-stack=${1:?usage: $0 terrain|roller|norma [OUT.bag] [DURATION]}
+stack=${1:?usage: $0 terrain|roller|norma|rotor|freebot [OUT.bag] [DURATION]}
 case $stack in
   terrain) ns=sphere; default=terrain_3R_circle_fixture.bag
            launch=(terrain_stack.launch robot:=3R path:=circle model:=paper speedup:=10)
@@ -32,7 +36,13 @@ case $stack in
   norma)   ns=norma; default=norma_paper_fixture.bag
            launch=(norma_stack.launch controller:=paper speedup:=1)
            keep="tracking_error target desired_path trail"; default_duration=45 ;;
-  *) echo "unknown stack '$stack' (terrain | roller | norma)" >&2; exit 2 ;;
+  rotor)   ns=rotor; default=rotor_k2.5_n2_fixture.bag
+           launch=(rotor_stack.launch speedup:=1)
+           keep="planned_path contact_curve driven_path"; default_duration=14 ;;
+  freebot) ns=freebot; default=freebot_ABC_fixture.bag
+           launch=(freebot_stack.launch speedup:=2)
+           keep="freebot_markers ik_target"; default_duration=20 ;;
+  *) echo "unknown stack '$stack' (terrain | roller | norma | rotor | freebot)" >&2; exit 2 ;;
 esac
 out=$(realpath -m "${2:-$SR_ROOT/test/data/$default}")
 duration=${3:-${default_duration:-25}}

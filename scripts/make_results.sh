@@ -6,7 +6,7 @@
 #
 # Batch part (~2 min): terrain_results.py (16 terrain runs), rotor_figures.py (Figs 9, 10),
 # freebot_results.py (Table II targets), the two 1300 s Norma runs and plot_norma_run.py.
-# --with-rviz (~3.5 min more): rviz_figures.sh records each stack and screenshots its bag.
+# --with-rviz (~4.5 min more): rviz_figures.sh records each stack and screenshots its bag.
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 sim=$SR_ROOT/install/spherical_robots/lib/spherical_robots/sphere_sim

@@ -1,28 +1,34 @@
 #!/usr/bin/env python3
 """rostest of launch/replay.launch: rviz under Xvfb shows a replayed stack's bag
-(test/replay_rviz.test: terrain; test/replay_rviz_roller.test; test/replay_rviz_norma.test).
+(test/replay_rviz.test: terrain; test/replay_rviz_{roller,norma,rotor,freebot}.test).
 
 The bag (test/data/*_fixture.bag, scripts/make_fixture_bag.sh) plays in a loop at ~rate x. Private
-params: ~ns (the stack's namespace, sphere), ~rviz_config, ~min_terrain_fraction (0.2; 0 for a
-stack without a terrain mesh, then the desired path proves the panel is drawn), ~min_trail_pixels
-(80), ~shot_window ([12, 22] s of bag time). Checks:
+params: ~ns (the stack's namespace, sphere), ~rviz_config, ~robot_frames (the frames whose spheres
+must show: [<ns>/base_link]), ~robot_radius (their radius, 0.2 m), ~robot_reference ("ring": the
+robot is judged against the scene around it, for a terrain; "background": against the panel's
+plain background colour), ~min_terrain_fraction (0.2; 0 for a stack without a terrain mesh),
+~min_path_pixels (300), ~min_trail_pixels (80), ~shot_window ([12, 22] s of bag time). Checks:
   1. /<ns>/rviz subscribes to every topic its rviz config names (tf, tf_static, terrain_marker,
-     desired_path, trail, target, ...): only the config names these, so the config was loaded;
-  2. a screenshot (`import -window root`) taken in the second half of a pass, in its 3D panel:
-     not blank (the terrain's colours cover a good part of it), the desired path's colour and the
-     driven trail's colour from rviz/terrain.rviz, and the robot's colours (the translucent shell
-     of urdf/terrain_robot.urdf over the terrain, or its band seen through it) inside the disc where
-     /tf puts the robot's base_link, and far fewer in control discs of the same size elsewhere;
+     desired_path, trail, planned_path, freebot_markers, ...): only the config names these, so
+     the config was loaded;
+  2. a screenshot (`import -window root`) taken in the shot window of a pass, in its 3D panel:
+     not blank (the terrain's colours cover a good part of it), the desired (or planned) path's
+     colour and the driven trail's colour of the stack's rviz config, and the robot's colours
+     inside the disc where /tf puts each robot frame, and far fewer elsewhere;
   3. rviz is rendering live: a second screenshot differs from the first;
   4. after the bag loops (simulated time jumps back to its start), the same screenshot checks pass
      again: rviz cleared its tf buffer and redrew from the replayed messages, no stale tf;
   5. no ERROR from rviz on /rosout (rostest runs no rosout node, hence no /rosout_agg; what rviz
      logs before this node subscribes, in its first second, is not seen). The jump's "Detected
      jump back in time ... Clearing TF buffer" WARN is expected and counted.
-The robot is located by projecting its tf position with the Orbit camera of rviz/terrain.rviz
+A robot frame is located by projecting its tf position with the Orbit camera of the rviz config
 (distance, yaw, pitch, focal point, vertical field of view) onto the 3D panel, which is found as
-the bounding box of the background colour. Screenshots are saved in $ROS_HOME (printed).
-Deadlines are wall-clock and generous (slow CI); a pass of the bag is about 12 s of wall time.
+the bounding box of the background colour. Robot colours: a translucent blue shell (blue over red
+by > 25 more than the reference has) or, for the terrain robots, their orange band seen through
+it. With the "ring" reference the scene is the mean colour of a ring around the disc, and the
+controls are discs of the same size around it; with "background", the controls are the rest of
+the panel, outside every robot disc. Screenshots are saved in $ROS_HOME (printed). Deadlines are
+wall-clock and generous (slow CI); a pass of a 25 s bag at rate 2 is about 12 s of wall time.
 """
 import math
 import os
@@ -43,19 +49,35 @@ from tf2_msgs.msg import TFMessage
 
 PKG = 'spherical_robots'
 NAME = 'replay_rviz_check'
-RADIUS = 0.2                # [m] base_link sphere of urdf/terrain_robot.urdf
 STARTUP_DEADLINE = 90.0     # [s] wall: rviz up and subscribed
 PASS_DEADLINE = 90.0        # [s] wall: reaching a given point of a pass of the bag
-SHOT_WINDOW = (12.0, 22.0)  # [s] bag time: trail long enough, robot converged, before the end
-# Colour classes [RGB 0-255] found in the 3D panel (measured counts in the test's log):
-MIN_PATH_PIXELS = 300       # Desired path, 25;255;0, a 0.02 m line around a 2 m circle (~900 px)
-MIN_TRAIL_PIXELS = 80       # Driven trail, 255;220;0, 0.03 m line, 12+ s of it (~270 px)
-MIN_TERRAIN_FRACTION = 0.2  # the terrain mesh fills about half of the panel
-NS = ''                     # the stack's namespace (~ns), set in main
-RVIZ = ''                   # /<ns>/rviz
-ROBOT_FRAME = ''            # <ns>/base_link
-MIN_ROBOT_PIXELS = 40       # robot-coloured pixels in its disc (~15 px radius, 640 px; 50-400)
 MIN_CHANGED_PIXELS = 200    # between two shots 1 s apart
+MIN_ROBOT_PIXELS = 40       # robot-coloured pixels in its disc (terrain: ~15 px radius; 50-400)
+MIN_ROBOT_FRACTION = 0.3    # of its disc, against a plain background (rotor, FreeBOT: 0.6-0.9)
+
+
+class Settings:
+    """The stack's private parameters (see the module's docstring); defaults: the terrain stack.
+    Colour classes [RGB 0-255] in the 3D panel, measured counts in the test's log: desired path
+    25;255;0 (terrain: a 0.02 m line around a 2 m circle, ~900 px), driven trail 255;220;0 (terrain:
+    0.03 m line, 12+ s of it, ~270 px), terrain mesh (about half of the panel)."""
+
+    def __init__(self):
+        self.ns = rospy.get_param('~ns', 'sphere')
+        self.rviz = '/%s/rviz' % self.ns
+        self.robot_frames = rospy.get_param('~robot_frames', ['%s/base_link' % self.ns])
+        self.robot_radius = float(rospy.get_param('~robot_radius', 0.2))
+        self.robot_reference = rospy.get_param('~robot_reference', 'ring')
+        if self.robot_reference not in ('ring', 'background'):
+            raise ValueError('~robot_reference must be "ring" or "background", not %r'
+                             % self.robot_reference)
+        self.min_terrain_fraction = float(rospy.get_param('~min_terrain_fraction', 0.2))
+        self.min_path_pixels = int(rospy.get_param('~min_path_pixels', 300))
+        self.min_trail_pixels = int(rospy.get_param('~min_trail_pixels', 80))
+        self.shot_window = tuple(rospy.get_param('~shot_window', [12.0, 22.0]))
+
+
+S = None  # Settings, made in main
 
 
 def wait_until(condition, what, timeout):
@@ -129,28 +151,54 @@ def colour_classes(p):
     return path, trail, terrain
 
 
+def robot_coloured(pixels, reference):
+    """Robot colours among N x 3 int pixels, against a reference colour (what is behind the robot):
+    the translucent blue shell raises blue over red (b - r up by > 25); the terrain robots' orange
+    band seen through it is orange (r > g + 20, g > b + 15, and not the trail's yellow). The
+    terrain or the background alone is neither."""
+    diff = pixels - reference
+    shell = (diff[..., 2] - diff[..., 0]) > 25
+    r, g, b = pixels[..., 0], pixels[..., 1], pixels[..., 2]
+    band = (r > g + 20) & (g > b + 15) & ~((b < 50) & (g > 170))
+    return shell | band
+
+
+def world_position(transforms, frame, fixed='world'):
+    """Position of `frame` in `fixed` through the chain of latest transforms {child: (parent,
+    translation, rotation xyzw)}; None if the chain does not reach `fixed`."""
+    position = np.zeros(3)
+    for _ in range(len(transforms) + 1):
+        if frame == fixed:
+            return position
+        if frame not in transforms:
+            return None
+        frame, translation, (x, y, z, w) = transforms[frame]
+        u = np.array([x, y, z])  # rotate by the unit quaternion: v + 2w(u x v) + 2u x (u x v)
+        position = (translation + position + 2.0 * w * np.cross(u, position)
+                    + 2.0 * np.cross(u, np.cross(u, position)))
+    return None
+
+
+def disc_distance(shape, centre):
+    """Distance [px] of every pixel of an image of `shape` from `centre` (column, row)."""
+    yy, xx = np.mgrid[0:shape[0], 0:shape[1]]
+    return np.hypot(xx - centre[0], yy - centre[1])
+
+
 def robot_pixels(image, centre, radius):
     """Robot-coloured pixels in the disc of `radius` px around `centre`, judged against the mean of
-    a ring around it (the terrain there): the translucent blue shell raises blue over red
-    (b - r up by > 25), its orange band seen through it is orange (r > g + 20, g > b + 15, and not
-    the trail's yellow). The terrain alone is neither."""
+    a ring around it (the terrain there)."""
     cx, cy = centre
     h, w = image.shape[:2]
     reach = int(radius * 2.6) + 2
     y0, y1 = max(0, int(cy) - reach), min(h, int(cy) + reach + 1)
     x0, x1 = max(0, int(cx) - reach), min(w, int(cx) + reach + 1)
     patch = image[y0:y1, x0:x1].astype(int)
-    yy, xx = np.mgrid[y0:y1, x0:x1]
-    d = np.hypot(xx - cx, yy - cy)
+    d = disc_distance(patch.shape, (cx - x0, cy - y0))
     disc, ring = d <= radius, (d > 1.6 * radius) & (d < 2.6 * radius)
     if disc.sum() == 0 or ring.sum() == 0:
         return 0
-    inside = patch[disc]
-    diff = inside - patch[ring].mean(axis=0)
-    shell = (diff[:, 2] - diff[:, 0]) > 25
-    r, g, b = inside[:, 0], inside[:, 1], inside[:, 2]
-    band = (r > g + 20) & (g > b + 15) & ~((b < 50) & (g > 170))
-    return int((shell | band).sum())
+    return int(robot_coloured(patch[disc], patch[ring].mean(axis=0)).sum())
 
 
 class ReplayRvizCheck(unittest.TestCase):
@@ -158,7 +206,7 @@ class ReplayRvizCheck(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.lock = threading.Lock()
-        cls.robot = None         # latest world -> base_link translation
+        cls.transforms = {}      # child frame -> (parent frame, translation, rotation xyzw), latest
         cls.clock = None
         cls.jumps = 0            # times simulated time went back (bag loops)
         cls.rviz_errors = []
@@ -168,22 +216,23 @@ class ReplayRvizCheck(unittest.TestCase):
                           config['Visualization Manager']['Global Options']['Background Color'].split(';')]
         cls.camera = OrbitCamera(config['Visualization Manager']['Views']['Current'])
         cls.topics = sorted(
-            rosgraph.names.ns_join('/' + NS, d[key])
+            rosgraph.names.ns_join('/' + S.ns, d[key])
             for d in config['Visualization Manager']['Displays']
             for key in ('Topic', 'Marker Topic') if key in d and d.get('Enabled', True))
         cls.shot_dir = os.environ.get('ROS_HOME', os.path.expanduser('~/.ros'))
         rospy.Subscriber('/tf', TFMessage, cls.on_tf, queue_size=100)
+        rospy.Subscriber('/tf_static', TFMessage, cls.on_tf, queue_size=100)
         rospy.Subscriber('/clock', Clock, cls.on_clock, queue_size=100)
         # rostest starts no rosout node, so there is no /rosout_agg: listen to /rosout itself.
         rospy.Subscriber('/rosout', Log, cls.on_log, queue_size=1000)
 
     @classmethod
     def on_tf(cls, msg):
-        for t in msg.transforms:
-            if t.child_frame_id == ROBOT_FRAME:
-                with cls.lock:
-                    v = t.transform.translation
-                    cls.robot = np.array([v.x, v.y, v.z])
+        with cls.lock:
+            for t in msg.transforms:
+                v, q = t.transform.translation, t.transform.rotation
+                cls.transforms[t.child_frame_id] = (t.header.frame_id, np.array([v.x, v.y, v.z]),
+                                                    np.array([q.x, q.y, q.z, q.w]))
 
     @classmethod
     def on_clock(cls, msg):
@@ -195,7 +244,7 @@ class ReplayRvizCheck(unittest.TestCase):
 
     @classmethod
     def on_log(cls, msg):
-        if msg.name == RVIZ:
+        if msg.name == S.rviz:
             if msg.level >= Log.ERROR:
                 cls.rviz_errors.append(msg.msg)
             elif msg.level == Log.WARN:
@@ -205,30 +254,32 @@ class ReplayRvizCheck(unittest.TestCase):
         with self.lock:
             return self.clock if self.clock is not None else -1.0
 
-    def robot_position(self):
+    def robot_positions(self):
+        """World position of every robot frame from the latest transforms, None for a frame whose
+        chain of transforms does not reach the fixed frame."""
         with self.lock:
-            return None if self.robot is None else self.robot.copy()
+            return [world_position(self.transforms, frame) for frame in S.robot_frames]
 
     def wait_for_shot_window(self, min_jumps):
-        """Waits for bag time inside SHOT_WINDOW in a pass after `min_jumps` loops."""
+        """Waits for bag time inside the shot window in a pass after `min_jumps` loops."""
         wait_until(lambda: self.jumps >= min_jumps
-                   and SHOT_WINDOW[0] <= self.bag_time() <= SHOT_WINDOW[1],
-                   'bag time in [%g, %g] s after %d loop(s)' % (SHOT_WINDOW + (min_jumps,)),
+                   and S.shot_window[0] <= self.bag_time() <= S.shot_window[1],
+                   'bag time in [%g, %g] s after %d loop(s)' % (S.shot_window + (min_jumps,)),
                    PASS_DEADLINE)
 
     def shot(self, label):
-        """A screenshot with the robot's position from /tf just before and after it."""
-        before, t_before = self.robot_position(), self.bag_time()
+        """A screenshot with the robot frames' positions from /tf just before and after it."""
+        before, t_before = self.robot_positions(), self.bag_time()
         image, ppm = grab_screen()
-        after, t_after = self.robot_position(), self.bag_time()
+        after, t_after = self.robot_positions(), self.bag_time()
         path = os.path.join(self.shot_dir, 'replay_rviz_%s.png' % label)
         subprocess.run(['convert', 'ppm:-', path], input=ppm, check=True, timeout=30)
         rospy.loginfo('%s: screenshot %s taken at bag time %.2f-%.2f s', NAME, path, t_before,
                       t_after)
-        robot = None if before is None or after is None else (before + after) / 2.0
-        return image, robot, path
+        robots = [None if b is None or a is None else (b + a) / 2.0 for b, a in zip(before, after)]
+        return image, robots, path
 
-    def check_shot(self, image, robot, path):
+    def check_shot(self, image, robots, path):
         panel = find_panel(image, self.background)
         self.assertIsNotNone(panel, 'no 3D panel (background %s) in %s' % (self.background, path))
         top, bottom, left, right = panel
@@ -237,47 +288,79 @@ class ReplayRvizCheck(unittest.TestCase):
         p = image[top:bottom + 1, left:right + 1].astype(int)
         path_px, trail_px, terrain_px = (int(m.sum()) for m in colour_classes(p))
         terrain_fraction = terrain_px / float(p.shape[0] * p.shape[1])
-        self.assertIsNotNone(robot, 'no %s on /tf' % ROBOT_FRAME)
-        centre = self.camera.project(robot, panel)
-        rim = self.camera.project(robot + np.array([0.0, 0.0, RADIUS]), panel)
-        radius = math.hypot(rim[0] - centre[0], rim[1] - centre[1])
-        on_robot = robot_pixels(image, centre, radius)
-        controls = [robot_pixels(image, (centre[0] + 4 * radius * math.cos(a),
-                                         centre[1] + 4 * radius * math.sin(a)), radius)
-                    for a in np.linspace(0.0, 2.0 * math.pi, 8, endpoint=False)]
         rospy.loginfo('%s: %s: panel rows %d-%d cols %d-%d; path %d px, trail %d px, terrain %.2f '
-                      'of the panel; robot at (%.2f, %.2f, %.2f) m -> px (%.0f, %.0f), r %.1f px: '
-                      '%d robot-coloured px, controls %s', NAME, os.path.basename(path), top, bottom,
-                      left, right, path_px, trail_px, terrain_fraction, robot[0], robot[1], robot[2],
-                      centre[0], centre[1], radius, on_robot, controls)
-        self.assertGreaterEqual(terrain_fraction, MIN_TERRAIN_FRACTION,
-                           'blank 3D panel? terrain covers %.2f of it in %s' % (terrain_fraction, path))
-        self.assertGreater(path_px, MIN_PATH_PIXELS, 'desired path missing in %s' % path)
-        self.assertGreater(trail_px, MIN_TRAIL_PIXELS, 'driven trail missing in %s' % path)
-        self.assertGreater(on_robot, MIN_ROBOT_PIXELS,
-                           'robot not where tf puts it (px %.0f, %.0f) in %s' % (centre + (path,)))
-        self.assertGreater(on_robot, 3 * sorted(controls)[len(controls) // 2] + 10,
-                           'robot colours no more frequent at the robot than elsewhere in %s' % path)
+                      'of the panel', NAME, os.path.basename(path), top, bottom, left, right,
+                      path_px, trail_px, terrain_fraction)
+        self.assertGreaterEqual(terrain_fraction, S.min_terrain_fraction,
+                                'blank 3D panel? terrain covers %.2f of it in %s'
+                                % (terrain_fraction, path))
+        self.assertGreaterEqual(path_px, S.min_path_pixels, 'desired path missing in %s' % path)
+        self.assertGreaterEqual(trail_px, S.min_trail_pixels, 'driven trail missing in %s' % path)
+        discs = []
+        for frame, robot in zip(S.robot_frames, robots):
+            self.assertIsNotNone(robot, 'no %s on /tf' % frame)
+            centre = self.camera.project(robot, panel)
+            rim = self.camera.project(robot + np.array([0.0, 0.0, S.robot_radius]), panel)
+            discs.append((frame, robot, centre, math.hypot(rim[0] - centre[0], rim[1] - centre[1])))
+        if S.robot_reference == 'ring':
+            self.check_robots_against_ring(image, discs, path)
+        else:
+            self.check_robots_against_background(image, panel, discs, path)
+
+    def check_robots_against_ring(self, image, discs, path):
+        for frame, robot, centre, radius in discs:
+            on_robot = robot_pixels(image, centre, radius)
+            controls = [robot_pixels(image, (centre[0] + 4 * radius * math.cos(a),
+                                             centre[1] + 4 * radius * math.sin(a)), radius)
+                        for a in np.linspace(0.0, 2.0 * math.pi, 8, endpoint=False)]
+            rospy.loginfo('%s: %s at (%.3f, %.3f, %.3f) m -> px (%.0f, %.0f), r %.1f px: %d '
+                          'robot-coloured px, controls %s', NAME, frame, robot[0], robot[1],
+                          robot[2], centre[0], centre[1], radius, on_robot, controls)
+            self.assertGreater(on_robot, MIN_ROBOT_PIXELS, '%s not where tf puts it (px %.0f, %.0f) '
+                               'in %s' % ((frame,) + centre + (path,)))
+            self.assertGreater(on_robot, 3 * sorted(controls)[len(controls) // 2] + 10,
+                               '%s colours no more frequent at the robot than elsewhere in %s'
+                               % (frame, path))
+
+    def check_robots_against_background(self, image, panel, discs, path):
+        top, bottom, left, right = panel
+        p = image[top:bottom + 1, left:right + 1].astype(int)
+        coloured = robot_coloured(p, np.array(self.background))
+        near_any = np.zeros(coloured.shape, bool)
+        for frame, robot, centre, radius in discs:
+            d = disc_distance(coloured.shape, (centre[0] - left, centre[1] - top))
+            disc = d <= 0.8 * radius  # inside the rim, whose shading is dark
+            near_any |= d <= 1.3 * radius
+            fraction = coloured[disc].mean() if disc.any() else 0.0
+            rospy.loginfo('%s: %s at (%.3f, %.3f, %.3f) m -> px (%.0f, %.0f), r %.1f px: %.2f of '
+                          'its disc robot-coloured', NAME, frame, robot[0], robot[1], robot[2],
+                          centre[0], centre[1], radius, fraction)
+            self.assertGreater(fraction, MIN_ROBOT_FRACTION, '%s not where tf puts it (px %.0f, '
+                               '%.0f) in %s' % ((frame,) + centre + (path,)))
+        elsewhere = coloured[~near_any].mean()
+        rospy.loginfo('%s: %.3f of the panel away from the robot is robot-coloured', NAME, elsewhere)
+        self.assertLess(elsewhere, MIN_ROBOT_FRACTION / 5.0,
+                        'robot colours all over the panel in %s' % path)
 
     def test_01_config_loaded(self):
-        self.assertIn('/%s/desired_path' % NS, self.topics)
+        self.assertGreaterEqual(len(self.topics), 2, 'rviz config without topics: %s' % self.topics)
         master = rosgraph.Master(NAME)
 
         def missing():
-            subscribed = {topic for topic, nodes in master.getSystemState()[1] if RVIZ in nodes}
+            subscribed = {topic for topic, nodes in master.getSystemState()[1] if S.rviz in nodes}
             return [t for t in ['/tf', '/tf_static'] + self.topics if t not in subscribed]
-        wait_until(lambda: not missing(), '%s to subscribe to the topics of its config' % RVIZ,
+        wait_until(lambda: not missing(), '%s to subscribe to the topics of its config' % S.rviz,
                    STARTUP_DEADLINE)
-        self.assertTrue(rospy.has_param('/%s/robot_description' % NS))
+        self.assertTrue(rospy.has_param('/%s/robot_description' % S.ns))
 
     def test_02_screenshot(self):
-        wait_until(lambda: self.robot_position() is not None, 'the robot on /tf', STARTUP_DEADLINE)
+        wait_until(lambda: all(p is not None for p in self.robot_positions()), 'the robot on /tf', STARTUP_DEADLINE)
         # rviz needs a moment after subscribing to draw; a pass that began before it was up is
         # fine too, as long as the shot falls in the window.
         time.sleep(3.0)
         self.wait_for_shot_window(0)
-        image, robot, path = self.shot('first_pass')
-        self.check_shot(image, robot, path)
+        image, robots, path = self.shot('first_pass')
+        self.check_shot(image, robots, path)
         time.sleep(1.0)
         image2, _, _ = self.shot('one_second_later')
         changed = int(np.any(image != image2, axis=2).sum())
@@ -287,8 +370,8 @@ class ReplayRvizCheck(unittest.TestCase):
     def test_03_after_loop(self):
         jumps = self.jumps
         self.wait_for_shot_window(jumps + 1)
-        image, robot, path = self.shot('after_loop')
-        self.check_shot(image, robot, path)
+        image, robots, path = self.shot('after_loop')
+        self.check_shot(image, robots, path)
 
     def test_04_no_rviz_errors(self):
         time.sleep(1.0)  # let /rosout catch up
@@ -300,10 +383,5 @@ class ReplayRvizCheck(unittest.TestCase):
 
 if __name__ == '__main__':
     rospy.init_node(NAME)
-    NS = rospy.get_param('~ns', 'sphere')
-    RVIZ = '/%s/rviz' % NS
-    ROBOT_FRAME = '%s/base_link' % NS
-    MIN_TERRAIN_FRACTION = float(rospy.get_param('~min_terrain_fraction', MIN_TERRAIN_FRACTION))
-    MIN_TRAIL_PIXELS = int(rospy.get_param('~min_trail_pixels', MIN_TRAIL_PIXELS))
-    SHOT_WINDOW = tuple(rospy.get_param('~shot_window', list(SHOT_WINDOW)))
+    S = Settings()
     rostest.rosrun(PKG, NAME, ReplayRvizCheck)

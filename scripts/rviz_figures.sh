@@ -3,12 +3,14 @@
 # launch/record.launch) and screenshots the replayed bag (scripts/rviz_screenshot.sh) late in the
 # run, when the trail shows the approach:
 #
-#   scripts/rviz_figures.sh [OUT_DIR]     (default docs/figures; about 3.5 min)
+#   scripts/rviz_figures.sh [OUT_DIR [NAME...]]   (default docs/figures, all; about 4.5 min)
 #
 #   terrain_rviz_3R_circle.png    terrain stack, 3R robot, circle path, at t = 150 s
 #   terrain_rviz_RS_diamond.png   terrain stack, RS robot, diamond path, at t = 150 s
 #   roller_rviz_circle.png        roller stack, circle, at t = 60 s
 #   norma_rviz_paper.png          Norma stack, paper controller, at t = 55 s (real time)
+#   rotor_rviz.png                rotor stack, default two-step manoeuvre, at t = 15 s (ended)
+#   freebot_rviz.png              FreeBOT stack, default targets, at t = 26 s (at target C)
 # Needs the built package. Each run gets its own ROS master on a free port.
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/env.sh"
@@ -18,10 +20,14 @@ mkdir -p "$out_dir"
 work=$(mktemp -d /tmp/rviz_figures.XXXXXX)
 trap 'rm -rf "$work"' EXIT
 
-# record STACK NAME AT DURATION LAUNCH_ARGS...: records a run and screenshots it at bag time AT.
+wanted=("${@:2}")
+
+# record STACK NAME AT DURATION LAUNCH_ARGS...: records a run and screenshots it at bag time AT
+# (if NAME is wanted: no names given, or NAME among them).
 record() {
   local stack=$1 name=$2 at=$3 duration=$4 bag=$work/$2.bag port
   shift 4
+  [ ${#wanted[@]} -eq 0 ] || [[ " ${wanted[*]} " == *" $name "* ]] || return 0
   port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("", 0)); print(s.getsockname()[1]); s.close()')
   sr_log "recording $name ($duration s)"
   ROS_HOME=$work/ros_home ROS_HOSTNAME=127.0.0.1 ROS_MASTER_URI=http://127.0.0.1:$port/ \
@@ -35,3 +41,5 @@ record terrain terrain_rviz_3R_circle 150 160 robot:=3R path:=circle
 record terrain terrain_rviz_RS_diamond 150 160 robot:=RS path:=diamond
 record roller roller_rviz_circle 60 100 path:=circle
 record norma norma_rviz_paper 55 60 controller:=paper speedup:=1
+record rotor rotor_rviz 15 17
+record freebot freebot_rviz 26 28

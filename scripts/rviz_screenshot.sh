@@ -2,7 +2,8 @@
 # Screenshot of rviz showing a recorded bag at a given bag time, headless:
 #
 #   scripts/rviz_screenshot.sh BAG PNG [AT]     (AT: seconds of bag time, default: 1 s before its end)
-#   STACK=roller scripts/rviz_screenshot.sh ...  (the stack that recorded it: terrain (default) | roller)
+#   STACK=roller scripts/rviz_screenshot.sh ...  (the stack that recorded it: terrain (default) |
+#                                                roller | norma | rotor | freebot)
 #
 # Under its own virtual X server (xvfb-run) and its own ROS master, it runs
 # `roslaunch spherical_robots replay.launch bag:=BAG start:=...` from 6 s before AT (rviz starts
