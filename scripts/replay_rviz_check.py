@@ -53,7 +53,8 @@ STARTUP_DEADLINE = 90.0     # [s] wall: rviz up and subscribed
 PASS_DEADLINE = 90.0        # [s] wall: reaching a given point of a pass of the bag
 MIN_CHANGED_PIXELS = 200    # between two shots 1 s apart
 MIN_ROBOT_PIXELS = 40       # robot-coloured pixels in its disc (terrain: ~15 px radius; 50-400)
-MIN_ROBOT_FRACTION = 0.3    # of its disc, against a plain background (rotor, FreeBOT: 0.6-0.9)
+MIN_ROBOT_FRACTION = 0.5    # of its disc, against a plain background (measured: rotor 0.63, FreeBOT
+                            # 0.93-0.95; half a radius off: 0.39 and 0.12-0.35)
 
 
 class Settings:
