@@ -1,25 +1,83 @@
 #!/usr/bin/python3
-"""Figs 6-10 of Moazami et al. 2019 (Norma) from a `sphere_sim norma` closed-loop CSV, plus the
-tracking error: XY path (Fig 6), X and Y against time (Fig 7), T and F (Fig 8), the tilt phi
-(Fig 9), the slider delta (Fig 10) and |e|.
+"""Figs 6-10 of Moazami et al. 2019 (Norma) from a `sphere_sim norma` closed-loop CSV or from a
+recorded Norma stack's bag, plus the tracking error: XY path (Fig 6), X and Y against time
+(Fig 7), T and F (Fig 8), the tilt phi (Fig 9), the slider delta (Fig 10) and |e|.
 
-usage: plot_norma_run.py RUN.csv OUT.png [TITLE]
+usage: plot_norma_run.py RUN OUT.png [TITLE] [--ns /norma]
+RUN: a CSV (its name ends in .csv) or a bag (launch/record.launch, or norma_stack.launch record:=).
 e.g.   sphere_sim norma --controller paper --out /tmp/paper.csv
        /usr/bin/python3 scripts/plot_norma_run.py /tmp/paper.csv docs/figures/norma_paper.png
+       roslaunch spherical_robots norma_stack.launch duration:=60 record:=/tmp/norma.bag
+       /usr/bin/python3 scripts/plot_norma_run.py /tmp/norma.bag /tmp/norma.png
+
+From a bag: <ns>/norma_state (q, X, Y, the efforts T, F the plant integrated with; 1 kHz, read at
+every 10th message) and <ns>/tracking_error (the desired point and |e|, as the controller saw
+them). A topic missing under <ns> is looked up by its message type.
 """
+import argparse
 import csv
+import os
 import sys
 
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt  # noqa: E402
 
+# The sibling tools, also when a catkin devel-space relay runs this file (it sets __file__).
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from plot_terrain_run import RunError, TRACKING_ERROR, find_topic, open_bag  # noqa: E402
+
+NORMA_STATE = 'spherical_robots/NormaState'
+COLUMNS = ('t', 'X', 'Y', 'Xd', 'Yd', 'err', 'T', 'F', 'phi', 'delta')
+STATE_STRIDE = 10  # norma_state comes at the plant's 1 kHz; 100 Hz draws the same curves
+
+
+def read_csv(path):
+    rows = list(csv.DictReader(open(path)))
+    if not rows or any(c not in rows[0] for c in COLUMNS):
+        raise RunError('%s is not a closed-loop sphere_sim norma CSV (columns %s)'
+                       % (path, ', '.join(COLUMNS)))
+    return {k: [float(r[k]) for r in rows] for k in COLUMNS}
+
+
+def read_bag(path, ns):
+    """The figure's columns from a bag: the state at STATE_STRIDE, each with the latest desired
+    point and |e| published before it."""
+    col = {k: [] for k in COLUMNS}
+    with open_bag(path) as (bag, topics):
+        state_topic = find_topic(topics, ns, 'norma_state', NORMA_STATE)
+        error_topic = find_topic(topics, ns, 'tracking_error', TRACKING_ERROR)
+        if state_topic is None or error_topic is None:
+            raise RunError('%s has no %s or no %s messages (topics: %s)' % (
+                path, NORMA_STATE, TRACKING_ERROR, ', '.join(sorted(topics)) or 'none'))
+        error, count = None, 0
+        for topic, msg, _ in bag.read_messages(topics=[state_topic, error_topic]):
+            if topic == error_topic:
+                error = msg
+                continue
+            count += 1
+            if error is None or count % STATE_STRIDE:
+                continue
+            for key, value in zip(COLUMNS, (
+                    msg.header.stamp.to_sec(), msg.x, msg.y, error.desired.x, error.desired.y,
+                    error.error_norm, msg.torque, msg.force, msg.q[2], msg.q[3])):
+                col[key].append(value)
+    if not col['t']:
+        raise RunError('%s: no %s after the first %s' % (path, NORMA_STATE, TRACKING_ERROR))
+    return col
+
 
 def main():
-    if len(sys.argv) not in (3, 4):
-        sys.exit(__doc__)
-    rows = list(csv.DictReader(open(sys.argv[1])))
-    col = {k: [float(r[k]) for r in rows] for k in rows[0]}
+    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    parser.add_argument('run')
+    parser.add_argument('out')
+    parser.add_argument('title', nargs='?')
+    parser.add_argument('--ns', default='/norma')
+    args = parser.parse_args()
+    try:
+        col = read_csv(args.run) if args.run.lower().endswith('.csv') else read_bag(args.run, args.ns)
+    except (OSError, RunError) as exc:
+        sys.exit('plot_norma_run.py: %s' % exc)
     t = col['t']
     fig, ax = plt.subplots(2, 3, figsize=(15, 8.5))
     a = ax[0][0]
@@ -46,10 +104,11 @@ def main():
     for row in ax:
         for a in row:
             a.grid(True, alpha=0.3)
-    if len(sys.argv) == 4:
-        fig.suptitle(sys.argv[3])
+    if args.title:
+        fig.suptitle(args.title)
     fig.tight_layout()
-    fig.savefig(sys.argv[2], dpi=80)
+    fig.savefig(args.out, dpi=80)
+    print('wrote %s (%d samples, t %.2f-%.2f s)' % (args.out, len(t), t[0], t[-1]))
 
 
 if __name__ == '__main__':

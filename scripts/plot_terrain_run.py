@@ -29,6 +29,7 @@ wall time is measured from its first tracking-error message.
 Exit status: 0 on success, 1 if the run cannot be read or holds no tracking errors or states.
 """
 import argparse
+import contextlib
 import csv
 import math
 import os
@@ -73,14 +74,20 @@ def find_topic(topics, ns, name, msg_type):
     return None
 
 
-def read_bag(bag_path, ns):
+@contextlib.contextmanager
+def open_bag(bag_path):
+    """The bag, open, and its {topic: message type}; RunError if it cannot be read."""
     import rosbag  # only needed for bags
     try:
         bag = rosbag.Bag(bag_path)
     except Exception as exc:  # rosbag raises several types for unreadable bags
         raise RunError("cannot read %s: %s" % (bag_path, exc))
     with bag:
-        topics = {t: i.msg_type for t, i in bag.get_type_and_topic_info().topics.items()}
+        yield bag, {t: i.msg_type for t, i in bag.get_type_and_topic_info().topics.items()}
+
+
+def read_bag(bag_path, ns):
+    with open_bag(bag_path) as (bag, topics):
         error_topic = find_topic(topics, ns, "tracking_error", TRACKING_ERROR)
         state_topic = find_topic(topics, ns, "terrain_state", TERRAIN_STATE)
         path_topic = find_topic(topics, ns, "desired_path", PATH)

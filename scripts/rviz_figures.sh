@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The rviz figures of docs/results.md and the README: records each stack's run (through
 # launch/record.launch) and screenshots the replayed bag (scripts/rviz_screenshot.sh) late in the
-# run, when the trail shows the approach:
+# run, when the trail shows the approach; the Norma, rotor and FreeBOT bags are also plotted
+# (plot_norma_run.py, plot_rotor_run.py, plot_freebot_run.py: *_run*.png beside the screenshots):
 #
 #   scripts/rviz_figures.sh [OUT_DIR [NAME...]]   (default docs/figures, all; about 4.5 min)
 #
@@ -11,6 +12,7 @@
 #   norma_rviz_paper.png          Norma stack, paper controller, at t = 55 s (real time)
 #   rotor_rviz.png                rotor stack, default two-step manoeuvre, at t = 15 s (ended)
 #   freebot_rviz.png              FreeBOT stack, default targets, at t = 26 s (at target C)
+#   norma_run_paper.png, rotor_run.png, freebot_run.png: the plots of those three bags
 # Needs the built package. Each run gets its own ROS master on a free port.
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/env.sh"
@@ -35,6 +37,11 @@ record() {
     duration:="$duration" record:="$bag" > "$work/roslaunch.log" 2>&1 \
     || { tail -20 "$work/roslaunch.log"; sr_log "FAILED: recording $name"; exit 1; }
   STACK=$stack "$SR_ROOT/scripts/rviz_screenshot.sh" "$bag" "$out_dir/$name.png" "$at"
+  case $stack in
+    norma|rotor|freebot)
+      python3 "$SR_ROOT/scripts/plot_${stack}_run.py" "$bag" "$out_dir/${name/rviz/run}.png" \
+        "$stack stack, recorded run ($*)" ;;
+  esac
 }
 
 record terrain terrain_rviz_3R_circle 150 160 robot:=3R path:=circle
