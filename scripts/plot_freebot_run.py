@@ -12,7 +12,6 @@ Topics under <ns> (a topic missing there is looked up by its message type): free
 chain, as the plant integrates it from the measured wheel rates), goal, goal_result,
 actuators/command and actuators/state. Prints each goal's verdicts.
 """
-import argparse
 import math
 import os
 import sys
@@ -21,10 +20,10 @@ import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt  # noqa: E402
 
-# The sibling tools, also when a catkin devel-space relay runs this file (it sets __file__).
+# The sibling module, also when a catkin devel-space relay runs this file (it sets __file__).
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from plot_terrain_run import JOINT_STATE, RunError, find_topic, open_bag  # noqa: E402
-from plot_rotor_run import attitude_angle  # noqa: E402
+from plot_support import (JOINT_STATE, RunError, attitude_angle, find_topic,  # noqa: E402
+                          open_bag, read_or_exit, run_figure_arguments)
 
 FREEBOT_STATE = 'spherical_robots/FreebotState'
 GOAL_RESULT = 'spherical_robots/FreebotGoalResult'
@@ -164,16 +163,8 @@ def verdict_lines(run):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
-    parser.add_argument('bag')
-    parser.add_argument('out')
-    parser.add_argument('title', nargs='?')
-    parser.add_argument('--ns', default='/freebot')
-    args = parser.parse_args()
-    try:
-        run = read_bag(args.bag, args.ns)
-    except (OSError, RunError) as exc:
-        sys.exit('plot_freebot_run.py: %s' % exc)
+    args = run_figure_arguments(__doc__, '/freebot')
+    run = read_or_exit(read_bag, args)
     plot(run, args.out, args.title)
     print('\n'.join(verdict_lines(run)))
     print('wrote %s' % args.out)

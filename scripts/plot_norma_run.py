@@ -14,7 +14,6 @@ From a bag: <ns>/norma_state (q, X, Y, the efforts T, F the plant integrated wit
 every 10th message) and <ns>/tracking_error (the desired point and |e|, as the controller saw
 them). A topic missing under <ns> is looked up by its message type.
 """
-import argparse
 import csv
 import os
 import sys
@@ -23,9 +22,10 @@ import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt  # noqa: E402
 
-# The sibling tools, also when a catkin devel-space relay runs this file (it sets __file__).
+# The sibling module, also when a catkin devel-space relay runs this file (it sets __file__).
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from plot_terrain_run import RunError, TRACKING_ERROR, find_topic, open_bag  # noqa: E402
+from plot_support import (TRACKING_ERROR, RunError, find_topic, open_bag,  # noqa: E402
+                          read_or_exit, run_figure_arguments)
 
 NORMA_STATE = 'spherical_robots/NormaState'
 COLUMNS = ('t', 'X', 'Y', 'Xd', 'Yd', 'err', 'T', 'F', 'phi', 'delta')
@@ -67,17 +67,13 @@ def read_bag(path, ns):
     return col
 
 
+def read_run(path, ns):
+    return read_csv(path) if path.lower().endswith('.csv') else read_bag(path, ns)
+
+
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
-    parser.add_argument('run')
-    parser.add_argument('out')
-    parser.add_argument('title', nargs='?')
-    parser.add_argument('--ns', default='/norma')
-    args = parser.parse_args()
-    try:
-        col = read_csv(args.run) if args.run.lower().endswith('.csv') else read_bag(args.run, args.ns)
-    except (OSError, RunError) as exc:
-        sys.exit('plot_norma_run.py: %s' % exc)
+    args = run_figure_arguments(__doc__, '/norma')
+    col = read_or_exit(read_run, args)
     t = col['t']
     fig, ax = plt.subplots(2, 3, figsize=(15, 8.5))
     a = ax[0][0]

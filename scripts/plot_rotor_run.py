@@ -12,7 +12,6 @@ Topics under <ns> (a topic missing there is looked up by its message type): plan
 plan, latched), odom (the plant's centre and attitude), actuators/command and actuators/state
 (rotor_1, rotor_2 [rad/s]), joint_states (rotor angles [rad]). Prints the end errors.
 """
-import argparse
 import math
 import os
 import sys
@@ -21,22 +20,12 @@ import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt  # noqa: E402
 
-# The sibling tools, also when a catkin devel-space relay runs this file (it sets __file__).
+# The sibling module, also when a catkin devel-space relay runs this file (it sets __file__).
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from plot_terrain_run import JOINT_STATE, PATH, RunError, find_topic, open_bag  # noqa: E402
+from plot_support import (JOINT_STATE, PATH, RunError, attitude_angle, find_topic,  # noqa: E402
+                          open_bag, read_or_exit, run_figure_arguments)
 
 ODOMETRY = 'nav_msgs/Odometry'
-
-
-def attitude_angle(q, r):
-    """Angle [rad] of the rotation between two attitudes, quaternions (x, y, z, w) of any non-zero
-    norm (a goal's may be unit only to a few digits): 2 atan2(|vector part|, |scalar part|) of
-    q* r, accurate for small angles too, where acos of the dot product is not."""
-    (x1, y1, z1, w1), (x2, y2, z2, w2) = q, r
-    w = w1 * w2 + x1 * x2 + y1 * y2 + z1 * z2
-    v = (w1 * x2 - x1 * w2 - y1 * z2 + z1 * y2, w1 * y2 - y1 * w2 - z1 * x2 + x1 * z2,
-         w1 * z2 - z1 * w2 - x1 * y2 + y1 * x2)
-    return 2.0 * math.atan2(math.hypot(*v), abs(w))
 
 
 def read_bag(path, ns):
@@ -113,16 +102,8 @@ def plot(run, out, title):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
-    parser.add_argument('bag')
-    parser.add_argument('out')
-    parser.add_argument('title', nargs='?')
-    parser.add_argument('--ns', default='/rotor')
-    args = parser.parse_args()
-    try:
-        run = read_bag(args.bag, args.ns)
-    except (OSError, RunError) as exc:
-        sys.exit('plot_rotor_run.py: %s' % exc)
+    args = run_figure_arguments(__doc__, '/rotor')
+    run = read_or_exit(read_bag, args)
     distance, attitude, t_end = plot(run, args.out, args.title)
     print('wrote %s; at t = %.2f s the centre is %.3g m and the attitude %.3g rad from the plan\'s '
           'end' % (args.out, t_end, distance, attitude))

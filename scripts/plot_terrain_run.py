@@ -29,7 +29,6 @@ wall time is measured from its first tracking-error message.
 Exit status: 0 on success, 1 if the run cannot be read or holds no tracking errors or states.
 """
 import argparse
-import contextlib
 import csv
 import math
 import os
@@ -40,16 +39,14 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-TRACKING_ERROR = "spherical_robots/TrackingError"
+# The sibling module, also when a catkin devel-space relay runs this file (it sets __file__).
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
+from plot_support import (JOINT_STATE, PATH, TRACKING_ERROR, RunError, find_topic,  # noqa: E402
+                          open_bag)
+
 TERRAIN_STATE = "spherical_robots/TerrainState"
-PATH = "nav_msgs/Path"
-JOINT_STATE = "sensor_msgs/JointState"
 RATES = ("roll_rate", "lateral_rate", "turn_rate")
 CSV_COLUMNS = ("t", "x0", "y0", "z0", "xd", "yd", "zd", "e_norm", "psi", "phi") + RATES
-
-
-class RunError(Exception):
-    pass
 
 
 def new_run():
@@ -58,32 +55,6 @@ def new_run():
     commands: {joint name: [(t, rate)]} (bags only)."""
     return {"errors": [], "desired": [], "states": [], "path": None, "commands": {},
             "robot": "?", "source": ""}
-
-
-def find_topic(topics, ns, name, msg_type):
-    """The topic <ns>/<name> if the bag has it with msg_type, else the bag's only topic of msg_type."""
-    wanted = ns.rstrip("/") + "/" + name
-    if topics.get(wanted) == msg_type:
-        return wanted
-    candidates = sorted(t for t, ty in topics.items() if ty == msg_type)
-    if len(candidates) == 1:
-        return candidates[0]
-    if candidates:
-        raise RunError("no %s; several %s topics: %s (choose one with --ns)"
-                       % (wanted, msg_type, ", ".join(candidates)))
-    return None
-
-
-@contextlib.contextmanager
-def open_bag(bag_path):
-    """The bag, open, and its {topic: message type}; RunError if it cannot be read."""
-    import rosbag  # only needed for bags
-    try:
-        bag = rosbag.Bag(bag_path)
-    except Exception as exc:  # rosbag raises several types for unreadable bags
-        raise RunError("cannot read %s: %s" % (bag_path, exc))
-    with bag:
-        yield bag, {t: i.msg_type for t, i in bag.get_type_and_topic_info().topics.items()}
 
 
 def read_bag(bag_path, ns):
