@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "spherical_robots/core/angles.hpp"
 #include "spherical_robots/freebot/src_joint.hpp"
 #include "spherical_robots/freebot/trolley_control.hpp"
 #include "spherical_robots/freebot/trolley_drive.hpp"
@@ -35,7 +36,7 @@ using spherical_robots::freebot::TrolleyGains;
 using spherical_robots::freebot::trolleyReference;
 using spherical_robots::freebot::TrolleySpeeds;
 using spherical_robots::freebot::WheelSpeeds;
-using spherical_robots::freebot::wrapAngle;
+using spherical_robots::wrapToPi;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -172,7 +173,7 @@ TEST(TrolleyControlTest, DependentControlAlignsTheHeading) {
     speeds = dependentControl(reference, 0.0, phi, gains);
     phi += 1e-3 * speeds.steering;
   }
-  EXPECT_NEAR(wrapAngle(reference.direction - phi), 0.0, 1e-9);
+  EXPECT_NEAR(wrapToPi(reference.direction - phi), 0.0, 1e-9);
   EXPECT_NEAR(speeds.forward, reference.forward_speed, 1e-12);
   // Eq 63 with ṡ = u_f: s → s^r.
   double s = 0.0;
@@ -180,8 +181,8 @@ TEST(TrolleyControlTest, DependentControlAlignsTheHeading) {
     s += 1e-3 * forwardSpeed(0.05, 0.0, s, gains);
   }
   EXPECT_NEAR(s, 0.05, 1e-12);
-  EXPECT_NEAR(wrapAngle(3 * M_PI), M_PI, 1e-15);
-  EXPECT_NEAR(wrapAngle(-M_PI), M_PI, 1e-15);
+  EXPECT_NEAR(wrapToPi(3 * M_PI), M_PI, 1e-15);
+  EXPECT_NEAR(wrapToPi(-M_PI), M_PI, 1e-15);
 }
 
 }  // namespace

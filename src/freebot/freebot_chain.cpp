@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "spherical_robots/core/angles.hpp"
 #include "spherical_robots/core/validation.hpp"
 
 namespace spherical_robots::freebot {
@@ -92,7 +93,7 @@ ChainState FreebotChain::advance(const ChainState& state, const std::vector<Whee
       }
       heading += speeds.steering * h;  // eq 49
     }
-    next.headings[i] = wrapAngle(heading);
+    next.headings[i] = wrapToPi(heading);
   }
   return next;
 }
@@ -116,11 +117,11 @@ std::vector<ModuleDrive> FreebotChain::drive(const ChainState& state,
     out.distance = plan.distance;
     double direction = plan.direction;
     double distance = plan.distance;
-    if (std::abs(wrapAngle(direction - state.headings[i])) > 0.5 * M_PI) {
-      direction = wrapAngle(direction + M_PI);  // the target is behind: reverse
+    if (std::abs(wrapToPi(direction - state.headings[i])) > 0.5 * M_PI) {
+      direction = wrapToPi(direction + M_PI);  // the target is behind: reverse
       distance = -distance;
     }
-    out.heading_error = wrapAngle(direction - state.headings[i]);
+    out.heading_error = wrapToPi(direction - state.headings[i]);
     if (plan.distance <= limits.contact_tolerance) {
       out.arrived = true;
       continue;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "spherical_robots/core/angles.hpp"
 #include "spherical_robots/core/validation.hpp"
 
 namespace spherical_robots::freebot {
@@ -48,19 +49,14 @@ ArcPlan planArc(const SrcJoint& joint, const SrcJointState& current, const SrcJo
   return plan;
 }
 
-double wrapAngle(double angle) {
-  const double wrapped = std::remainder(angle, 2.0 * M_PI);
-  return wrapped <= -M_PI ? wrapped + 2.0 * M_PI : wrapped;
-}
-
 double steeringSpeed(double reference_direction, double reference_rate, double direction,
                      const TrolleyGains& gains) {
-  return reference_rate + gains.steering * wrapAngle(reference_direction - direction);  // eq 56
+  return reference_rate + gains.steering * wrapToPi(reference_direction - direction);  // eq 56
 }
 
 TrolleySpeeds dependentControl(const TrolleyReference& reference, double reference_rate,
                                double direction, const TrolleyGains& gains) {
-  const double error = wrapAngle(reference.direction - direction);
+  const double error = wrapToPi(reference.direction - direction);
   TrolleySpeeds speeds;
   speeds.forward = reference.forward_speed * std::cos(error);  // eq 57
   speeds.steering = steeringSpeed(reference.direction, reference_rate, direction, gains) +
@@ -84,7 +80,7 @@ ArcDrive driveToContact(const SrcJoint& joint, const SrcJointState& start, doubl
   const ArcPlan plan = planArc(joint, start, target);
   ArcDrive drive{start, heading, 0.0, 0.0};
   // Steer first (u_f^r = 0, so eq 57 is u_s = u_s^r of eq 56) ...
-  while (std::abs(wrapAngle(plan.direction - drive.heading)) > heading_tolerance &&
+  while (std::abs(wrapToPi(plan.direction - drive.heading)) > heading_tolerance &&
          drive.time < max_time) {
     drive.heading += dt * steeringSpeed(plan.direction, 0.0, drive.heading, gains);  // eq 49
     drive.time += dt;

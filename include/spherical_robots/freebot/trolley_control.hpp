@@ -50,9 +50,6 @@ TrolleyReference trolleyReference(const SrcJoint& joint, const Eigen::Vector2d& 
 /// current P_i. @throw std::invalid_argument on a non-unit quaternion.
 ArcPlan planArc(const SrcJoint& joint, const SrcJointState& current, const SrcJointState& target);
 
-/// An angle wrapped into (−π, π].
-double wrapAngle(double angle);
-
 /// Eq 56: u_s^r = φ̇^r + k_φ1 (φ^r − φ) [rad/s], the heading error wrapped into (−π, π].
 double steeringSpeed(double reference_direction, double reference_rate, double direction,
                      const TrolleyGains& gains);

@@ -1,0 +1,56 @@
+#include "spherical_robots/rotor/manoeuvre_correction.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "spherical_robots/core/angles.hpp"
+#include "spherical_robots/core/validation.hpp"
+
+namespace spherical_robots::rotor {
+namespace {
+
+void requireFinitePose(double u_a, double v_a, double psi, const std::string& what) {
+  requireFinite(u_a, what + " u_a [R]");
+  requireFinite(v_a, what + " v_a [R]");
+  requireFinite(psi, what + " psi [rad]");
+}
+
+}  // namespace
+
+RestPose planEnd(const RestPose& start, const PlanTarget& target) {
+  requireFinitePose(start.u_a, start.v_a, start.psi, "start");
+  requireFinitePose(target.u_a, target.v_a, target.psi, "plan target");
+  // R_zᵀ(ψ_0) applied to the zero-state displacement (eqs 6-7 with ω turned by eq 11).
+  const double c = std::cos(start.psi);
+  const double s = std::sin(start.psi);
+  return {start.u_a + c * target.u_a + s * target.v_a,
+          start.v_a - s * target.u_a + c * target.v_a, start.psi + target.psi};
+}
+
+PlanTarget correctionTarget(const RestPose& from, const RestPose& to) {
+  requireFinitePose(from.u_a, from.v_a, from.psi, "from");
+  requireFinitePose(to.u_a, to.v_a, to.psi, "to");
+  const double du = to.u_a - from.u_a;
+  const double dv = to.v_a - from.v_a;
+  const double c = std::cos(from.psi);
+  const double s = std::sin(from.psi);
+  return {c * du - s * dv, s * du + c * dv, wrapToPi(to.psi - from.psi)};
+}
+
+RestPose measuredRestPose(double centre_x, double centre_y, double radius,
+                          const Eigen::Quaterniond& attitude) {
+  requireFinite(centre_x, "centre x [m]");
+  requireFinite(centre_y, "centre y [m]");
+  requirePositive(radius, "sphere radius [m]");
+  const Eigen::Vector4d q = attitude.coeffs();  // x, y, z, w
+  if (!q.allFinite()) throw std::invalid_argument("attitude quaternion is not finite");
+  // The twist about z of q = (x, y, z, w) is (0, 0, z, w) normalised; R_zᵀ(ψ) is a turn by −ψ.
+  if (std::hypot(q.z(), q.w()) < 1e-9 * q.norm()) {
+    throw std::invalid_argument(
+        "attitude has its vertical axis upside down: no rest pose at the south pole");
+  }
+  return {centre_x / radius, centre_y / radius, wrapToPi(-2.0 * std::atan2(q.z(), q.w()))};
+}
+
+}  // namespace spherical_robots::rotor
