@@ -17,17 +17,6 @@ const std::string kWorldFrame = "world";
 // Goals come from rviz (float32 quaternions) and from people typing 4-digit quaternions.
 constexpr double kGoalUnitTolerance = 1e-3;
 
-int countParam(const ros::NodeHandle& nh, const std::string& name, int fallback, int minimum) {
-  const double value = numberParam(nh, name, fallback);
-  if (value < minimum || value != std::floor(value)) {
-    std::ostringstream what;
-    what << "parameter " << nh.resolveName(name) << " = " << value << " must be an integer >= "
-         << minimum;
-    throw std::invalid_argument(what.str());
-  }
-  return static_cast<int>(value);
-}
-
 const char* statusName(std::uint8_t status) {
   switch (status) {
     case spherical_robots::FreebotGoalResult::MOVING: return "moving";

@@ -2,6 +2,7 @@
 
 #include <XmlRpcValue.h>
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -51,6 +52,17 @@ std::string stringParam(const ros::NodeHandle& nh, const std::string& name, cons
 
 double numberParam(const ros::NodeHandle& nh, const std::string& name, double fallback) {
   return config::finiteNumber(RosParameterSource(nh), name, fallback);
+}
+
+int countParam(const ros::NodeHandle& nh, const std::string& name, int fallback, int minimum) {
+  const double value = numberParam(nh, name, fallback);
+  if (value < minimum || value != std::floor(value)) {
+    std::ostringstream what;
+    what << "parameter " << nh.resolveName(name) << " = " << value << " must be an integer >= "
+         << minimum;
+    throw std::invalid_argument(what.str());
+  }
+  return static_cast<int>(value);
 }
 
 double positiveParam(const ros::NodeHandle& nh, const std::string& name, double fallback) {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "spherical_robots/core/angles.hpp"
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 #include "spherical_robots/ros/sim_clock.hpp"
@@ -41,7 +42,11 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       max_rotor_speed_(numberParam(pnh, "max_rotor_speed", 0.0)),
       settle_(numberParam(pnh, "settle", 1.0)),
       actuator_time_constant_(numberParam(pnh, "actuator_time_constant", 0.0)),
-      path_period_(positiveParam(pnh, "path_period", 0.05)) {
+      path_period_(positiveParam(pnh, "path_period", 0.05)),
+      corrections_(countParam(pnh, "corrections", 0, 0)),
+      correction_tolerance_(positiveParam(pnh, "correction_tolerance", 1e-5)),
+      correction_heading_tolerance_(positiveParam(pnh, "correction_heading_tolerance", 1e-3)),
+      correction_steps_(countParam(pnh, "correction_steps", 1, 1)) {
   if (samples_per_step_ < 1) {
     throw std::invalid_argument("parameter " + pnh.resolveName("samples_per_step") +
                                 " must be >= 1");
@@ -66,6 +71,8 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   done_pub_ = nh.advertise<std_msgs::UInt32>("execution_done", 1, true);
   execute_sub_ = pnh.subscribe("execute", 1, &RotorPlannerRos::onExecute, this);
   odom_sub_ = nh.subscribe("odom", 10, &RotorPlannerRos::onOdometry, this);
+  command_timer_ = nh_.createTimer(ros::Duration(command_period_), &RotorPlannerRos::onCommandTimer,
+                                   this, false, false);
   ROS_INFO_STREAM("rotor_planner: R = " << radius_ << " m, circle radii up to " << max_radius_
                                         << " m; service " << service_.getService());
 }
@@ -105,9 +112,13 @@ bool RotorPlannerRos::onPlan(spherical_robots::PlanRotorMotion::Request& request
   }
   plan_k_ = plan.k;
   plan_steps_ = plan.steps;
+  plan_max_radius_ = plan.max_radius;
   plans_.clear();
-  for (const rotor::RotorPlan& solution : result.solutions)
+  plan_targets_.clear();
+  for (const rotor::RotorPlan& solution : result.solutions) {
     plans_.emplace_back(solution.a, solution.b, solution.gamma);
+    plan_targets_.push_back({plan.u_a, plan.v_a, solution.psi});
+  }
   const rotor::RotorPlan& best = result.solutions.front();
   ROS_INFO_STREAM("rotor_planner: " << result.solutions.size() << " plan(s); shortest a = "
                                     << best.a * radius_ << " m, b = " << best.b * radius_
@@ -159,7 +170,6 @@ void RotorPlannerRos::onExecute(const std_msgs::UInt32& msg) {
                                               << "request has " << plans_.size() << " solution(s)");
     return;
   }
-  const rotor::FigureEight& curve = plans_[msg.data];
   double robot_k = 0.0;
   if (nh_.getParam("inertia_ratio", robot_k) && std::abs(robot_k - plan_k_) > 1e-9) {
     ROS_WARN_STREAM("rotor_planner: the plan is for k = " << plan_k_ << " but the robot's "
@@ -167,6 +177,18 @@ void RotorPlannerRos::onExecute(const std_msgs::UInt32& msg) {
                                                           << " is " << robot_k
                                                           << ": it will not reach the target");
   }
+  if (!rest_pose_) {
+    ROS_WARN_STREAM("rotor_planner: no odom yet: the goal is the target from the zero state");
+  }
+  driven_.poses.clear();
+  last_driven_ = ros::Time();
+  startExecution(msg.data, plans_[msg.data], plan_steps_,
+                 rotor::planEnd(rest_pose_.value_or(rotor::RestPose{}), plan_targets_[msg.data]),
+                 corrections_);
+}
+
+bool RotorPlannerRos::startExecution(std::uint32_t index, const rotor::FigureEight& curve,
+                                     int steps, const rotor::RestPose& goal, int corrections_left) {
   try {
     double rate = curve_rate_;
     const double peak = rotor::peakRotorSpeed(plan_k_, inertia_scale_, curve);
@@ -178,22 +200,50 @@ void RotorPlannerRos::onExecute(const std_msgs::UInt32& msg) {
                                                                 << max_rotor_speed_ << " rad/s");
     }
     // Short manoeuvres at high rates shorten the ramps to fit.
-    const rotor::CurveTiming timing(plan_steps_, rate,
-                                    std::min(ramp_time_, 2.0 * M_PI * plan_steps_ / rate));
-    execution_ = Execution{msg.data, curve, timing, ros::Time::now()};
-    ROS_INFO_STREAM("rotor_planner: executing plan " << msg.data << " (" << plan_steps_
+    const rotor::CurveTiming timing(steps, rate, std::min(ramp_time_, 2.0 * M_PI * steps / rate));
+    execution_ = Execution{index, curve, timing, ros::Time::now(), goal, corrections_left};
+    ROS_INFO_STREAM("rotor_planner: executing plan " << index << " (" << steps
                                                      << " steps, theta rate " << rate
                                                      << " rad/s, peak rotor speed " << peak * rate
                                                      << " rad/s) for " << timing.duration()
                                                      << " s");
   } catch (const std::invalid_argument& error) {
-    ROS_WARN_STREAM("rotor_planner: execute " << msg.data << " refused: " << error.what());
-    return;
+    ROS_WARN_STREAM("rotor_planner: execute " << index << " refused: " << error.what());
+    return false;
   }
-  driven_.poses.clear();
-  last_driven_ = ros::Time();
-  command_timer_ = nh_.createTimer(ros::Duration(command_period_), &RotorPlannerRos::onCommandTimer,
-                                   this);
+  command_timer_.start();  // a correction continues in the running timer's phase
+  return true;
+}
+
+bool RotorPlannerRos::startCorrection() {
+  if (execution_->corrections_left <= 0 || !rest_pose_) return false;
+  const rotor::RestPose reached = *rest_pose_;
+  const rotor::RestPose& goal = execution_->goal;
+  const double miss = radius_ * std::hypot(goal.u_a - reached.u_a, goal.v_a - reached.v_a);
+  const double turn_miss = std::abs(wrapToPi(goal.psi - reached.psi));
+  if (miss <= correction_tolerance_ && turn_miss <= correction_heading_tolerance_) return false;
+  rotor::PlanRequest request;
+  request.k = plan_k_;
+  request.steps = correction_steps_;
+  request.max_radius = plan_max_radius_;
+  const rotor::PlanTarget target = rotor::correctionTarget(reached, goal);
+  request.u_a = target.u_a;
+  request.v_a = target.v_a;
+  request.psi = target.psi;
+  const rotor::PlanResult result = rotor::planRotorMotion(request);
+  const int left = execution_->corrections_left - 1;
+  if (result.solutions.empty()) {
+    ROS_WARN_STREAM("rotor_planner: " << miss << " m, " << turn_miss
+                                      << " rad off the goal, no correction: " << result.reason);
+    return false;
+  }
+  const rotor::RotorPlan& best = result.solutions.front();
+  ROS_INFO_STREAM("rotor_planner: " << miss << " m, " << turn_miss << " rad off the goal: "
+                                    << "correction " << corrections_ - left << " of "
+                                    << corrections_ << ", a = " << best.a * radius_
+                                    << " m, b = " << best.b * radius_ << " m");
+  return startExecution(execution_->index, rotor::FigureEight(best.a, best.b, best.gamma),
+                        correction_steps_, goal, left);
 }
 
 void RotorPlannerRos::onCommandTimer(const ros::TimerEvent&) {
@@ -209,7 +259,7 @@ void RotorPlannerRos::onCommandTimer(const ros::TimerEvent&) {
     command_pub_.publish(conversions::velocityJointState(kRotors, {speeds.phi1, speeds.phi2}, now));
     return;
   }
-  if (t < end + settle_) return;
+  if (t < end + settle_ || startCorrection()) return;
   std_msgs::UInt32 done;
   done.data = execution_->index;
   ROS_INFO_STREAM("rotor_planner: plan " << done.data << " executed");
@@ -220,6 +270,15 @@ void RotorPlannerRos::onCommandTimer(const ros::TimerEvent&) {
 }
 
 void RotorPlannerRos::onOdometry(const nav_msgs::Odometry& msg) {
+  const geometry_msgs::Point& centre = msg.pose.pose.position;
+  const geometry_msgs::Quaternion& q = msg.pose.pose.orientation;
+  try {
+    rest_pose_ = rotor::measuredRestPose(centre.x, centre.y, radius_,
+                                         Eigen::Quaterniond(q.w, q.x, q.y, q.z));
+  } catch (const std::invalid_argument& error) {
+    ROS_WARN_STREAM_THROTTLE(1.0, "rotor_planner: odom ignored: " << error.what());
+    return;
+  }
   if (!execution_) return;
   if (!periodDue(last_driven_, msg.header.stamp, path_period_)) return;
   last_driven_ = msg.header.stamp;

@@ -37,6 +37,8 @@ double numberParam(const ros::NodeHandle& nh, const std::string& name, double fa
 /// A finite number > 0.
 double positiveParam(const ros::NodeHandle& nh, const std::string& name, double fallback);
 bool boolParam(const ros::NodeHandle& nh, const std::string& name, bool fallback);
+/// A whole number >= minimum.
+int countParam(const ros::NodeHandle& nh, const std::string& name, int fallback, int minimum);
 
 /// String parameter `name` (or the fallback text) turned into a value by parse, e.g.
 /// terrain::robotTypeFromString; parse's std::invalid_argument is rethrown naming the parameter.

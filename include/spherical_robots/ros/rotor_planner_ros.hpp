@@ -14,6 +14,7 @@
 
 #include "spherical_robots/PlanRotorMotion.h"
 #include "spherical_robots/rotor/figure_eight.hpp"
+#include "spherical_robots/rotor/manoeuvre_correction.hpp"
 #include "spherical_robots/rotor/plan_execution.hpp"
 
 namespace spherical_robots {
@@ -40,11 +41,18 @@ namespace spherical_robots {
 /// ~actuator_time_constant τ [s] (0) > 0 the set-points carry the feed-forward inverse of a
 /// first-order actuator lag (rotor::lagCompensatedSetPoint), still open loop. Parameter
 /// rotor_inertia_scale J_zz / J_r (12) in the node handle's namespace. The plan starts wherever
-/// the sphere is: it reaches the target relative to the zero state only from the zero state.
-/// While executing and for ~settle [s] (1) after, it appends odom (nav_msgs/Odometry of the
-/// plant) to driven_path (nav_msgs/Path, every ~path_period [s] (0.05)); then it publishes the
-/// index on execution_done (std_msgs/UInt32, latched). A request while executing, before any
-/// plan, or with a bad index is refused with a warning.
+/// the sphere is at rest (odom, nav_msgs/Odometry of the plant): its goal is the plan's target
+/// taken from there (rotor::planEnd; the zero state gives the target itself).
+/// Closing the loop over manoeuvres: with ~corrections N (0: open loop) > 0, after each
+/// execution and its ~settle [s] (1) the node measures the rest pose from odom and, while it is
+/// more than ~correction_tolerance [m] (1e-5) or ~correction_heading_tolerance [rad] (1e-3) off
+/// the goal and corrections remain, plans a ~correction_steps (1)-step manoeuvre from there to the
+/// goal (rotor::correctionTarget, the request's k and radius limit) and executes it the same way;
+/// one the planner cannot find ends the corrections with a warning.
+/// While executing and settling it appends odom to driven_path (nav_msgs/Path, every
+/// ~path_period [s] (0.05)); at the end it publishes the index on execution_done
+/// (std_msgs/UInt32, latched). A request while executing, before any plan, or with a bad index
+/// is refused with a warning.
 class RotorPlannerRos {
  public:
   /// @throw std::invalid_argument on a bad parameter.
@@ -56,6 +64,11 @@ class RotorPlannerRos {
   /// Publishes the path and marker of the plan (a, b, γ in units of R) for inertia ratio k.
   void publishPlan(double k, int steps, double a, double b, double gamma);
   void onExecute(const std_msgs::UInt32& msg);
+  /// Starts tracing `curve` over `steps` steps toward `goal`; false (logged) if it cannot.
+  bool startExecution(std::uint32_t index, const rotor::FigureEight& curve, int steps,
+                      const rotor::RestPose& goal, int corrections_left);
+  /// After an execution has settled: plans and starts a correction if one is due and possible.
+  bool startCorrection();
   void onCommandTimer(const ros::TimerEvent& event);
   void onOdometry(const nav_msgs::Odometry& msg);
 
@@ -78,16 +91,25 @@ class RotorPlannerRos {
   double settle_;
   double actuator_time_constant_;
   double path_period_;
+  int corrections_;
+  double correction_tolerance_;
+  double correction_heading_tolerance_;
+  int correction_steps_;
   double plan_k_ = 0.0;
   int plan_steps_ = 0;
+  double plan_max_radius_ = 0.0;          ///< [R]
   std::vector<rotor::FigureEight> plans_;  ///< the last successful request's, in units of R
+  std::vector<rotor::PlanTarget> plan_targets_;  ///< what each of plans_ reaches from zero
   struct Execution {
     std::uint32_t index;
     rotor::FigureEight curve;
     rotor::CurveTiming timing;
     ros::Time start;
+    rotor::RestPose goal;
+    int corrections_left;
   };
   std::optional<Execution> execution_;
+  std::optional<rotor::RestPose> rest_pose_;  ///< from the latest valid odom
   nav_msgs::Path driven_;
   ros::Time last_driven_;
   ros::Subscriber execute_sub_;
