@@ -2,7 +2,8 @@
 """rostest of rotor_planner (test/rotor_planner.test): the service against the paper's published
 k = 2.5 solution (Svinin et al., section IV: h = R along +v_a with a1 = 0.300429 R,
 gamma = 0.931883), the latched path and marker of the shortest plan, and the answers to a target
-out of reach and to an invalid request. ~node names the node (relative)."""
+out of reach and to an invalid request, and what /diagnostics says of refused requests and of an
+odom that is not finite (ignored, counted, the node alive). ~node names the node (relative)."""
 import math
 import threading
 import time
@@ -10,7 +11,9 @@ import unittest
 
 import rospy
 import rostest
-from nav_msgs.msg import Path
+from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
+from nav_msgs.msg import Odometry, Path
+from std_msgs.msg import UInt32
 from visualization_msgs.msg import Marker
 from spherical_robots.srv import PlanRotorMotion, PlanRotorMotionRequest
 
@@ -31,6 +34,25 @@ class RotorPlannerCheck(unittest.TestCase):
         cls.marker = None
         rospy.Subscriber('planned_path', Path, cls.onPath, queue_size=1)
         rospy.Subscriber('contact_curve', Marker, cls.onMarker, queue_size=1)
+        cls.status = None
+        rospy.Subscriber('/diagnostics', DiagnosticArray, cls.onDiagnostics, queue_size=10)
+
+    @classmethod
+    def onDiagnostics(cls, msg):
+        for status in msg.status:
+            if 'rotor planner' in status.name:
+                with cls.lock:
+                    cls.status = status
+
+    def wait_for_status(self, condition, what):
+        deadline = time.time() + 20.0
+        while time.time() < deadline:
+            with self.lock:
+                status = self.status
+            if status is not None and condition(status):
+                return status
+            time.sleep(0.05)
+        self.fail('no rotor planner diagnostics with %s; last: %s' % (what, status))
 
     @classmethod
     def onPath(cls, msg):
@@ -92,6 +114,35 @@ class RotorPlannerCheck(unittest.TestCase):
         res = self.request(2.5, 0, 0.0, self.radius, 0.0)
         self.assertFalse(res.success)
         self.assertIn('steps', res.reason)
+
+
+    def test_refusals_and_bad_odom_on_diagnostics(self):
+        res = self.request(2.5, 0, 0.0, self.radius, 0.0)
+        self.assertFalse(res.success)
+        status = self.wait_for_status(lambda s: s.level == DiagnosticStatus.WARN
+                                      and 'steps' in s.message, 'the refused request')
+        self.assertIn('steps', dict((v.key, v.value) for v in status.values)['last problem'])
+        execute = rospy.Publisher('rotor_planner/execute', UInt32, queue_size=1, latch=True)
+        execute.publish(UInt32(99))
+        self.wait_for_status(lambda s: 'execute 99 refused' in s.message, 'the refused execute')
+        odom = rospy.Publisher('odom', Odometry, queue_size=10)
+        bad = Odometry()
+        bad.pose.pose.position.x = float('nan')
+        bad.pose.pose.orientation.w = 1.0
+        deadline = time.time() + 20.0
+        while time.time() < deadline:
+            odom.publish(bad)
+            with self.lock:
+                values = dict((v.key, v.value) for v in self.status.values) if self.status else {}
+            rejected = [int(v) for k, v in values.items() if k.endswith('/odom rejected')]
+            if rejected and rejected[0] > 0:
+                break
+            time.sleep(0.1)
+        self.assertTrue(rejected and rejected[0] > 0, values)
+        self.assertIn('must be finite, got nan', values.get(rospy.resolve_name('odom') + ' last rejection', ''),
+                      values)
+        # Still serving.
+        self.assertTrue(self.request(2.5, 1, 0.0, self.radius, 0.0).success)
 
 
 if __name__ == '__main__':

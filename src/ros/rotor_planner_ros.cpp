@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "spherical_robots/core/angles.hpp"
@@ -46,7 +47,9 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       corrections_(countParam(pnh, "corrections", 0, 0)),
       correction_tolerance_(positiveParam(pnh, "correction_tolerance", 1e-5)),
       correction_heading_tolerance_(positiveParam(pnh, "correction_heading_tolerance", 1e-3)),
-      correction_steps_(countParam(pnh, "correction_steps", 1, 1)) {
+      correction_steps_(countParam(pnh, "correction_steps", 1, 1)),
+      odom_input_(nh.resolveName("odom"), positiveParam(pnh, "odom_timeout", 0.5)),
+      updater_(nh, pnh) {
   if (samples_per_step_ < 1) {
     throw std::invalid_argument("parameter " + pnh.resolveName("samples_per_step") +
                                 " must be >= 1");
@@ -73,6 +76,8 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   odom_sub_ = nh.subscribe("odom", 10, &RotorPlannerRos::onOdometry, this);
   command_timer_ = nh_.createTimer(ros::Duration(command_period_), &RotorPlannerRos::onCommandTimer,
                                    this, false, false);
+  updater_.setHardwareID("rotor sphere");
+  updater_.add("rotor planner", this, &RotorPlannerRos::diagnose);
   ROS_INFO_STREAM("rotor_planner: R = " << radius_ << " m, circle radii up to " << max_radius_
                                         << " m; service " << service_.getService());
 }
@@ -93,7 +98,7 @@ bool RotorPlannerRos::onPlan(spherical_robots::PlanRotorMotion::Request& request
   } catch (const std::invalid_argument& error) {
     response.success = false;
     response.reason = std::string("invalid request: ") + error.what();
-    ROS_WARN_STREAM("rotor_planner: " << response.reason);
+    refuse(response.reason);
     return true;
   }
   response.success = !result.solutions.empty();
@@ -107,7 +112,7 @@ bool RotorPlannerRos::onPlan(spherical_robots::PlanRotorMotion::Request& request
     response.final_error.push_back(solution.final_error);
   }
   if (!response.success) {
-    ROS_WARN_STREAM("rotor_planner: " << result.reason);
+    refuse(result.reason);
     return true;
   }
   plan_k_ = plan.k;
@@ -161,13 +166,13 @@ void RotorPlannerRos::publishPlan(double k, int steps, double a, double b, doubl
 
 void RotorPlannerRos::onExecute(const std_msgs::UInt32& msg) {
   if (execution_) {
-    ROS_WARN_STREAM("rotor_planner: plan " << execution_->index
-                                           << " is still executing; ignoring execute " << msg.data);
+    refuse("plan " + std::to_string(execution_->index) + " is still executing; ignoring execute " +
+           std::to_string(msg.data));
     return;
   }
   if (msg.data >= plans_.size()) {
-    ROS_WARN_STREAM("rotor_planner: execute " << msg.data << " refused: the last successful plan "
-                                              << "request has " << plans_.size() << " solution(s)");
+    refuse("execute " + std::to_string(msg.data) + " refused: the last successful plan request has " +
+           std::to_string(plans_.size()) + " solution(s)");
     return;
   }
   double robot_k = 0.0;
@@ -182,9 +187,12 @@ void RotorPlannerRos::onExecute(const std_msgs::UInt32& msg) {
   }
   driven_.poses.clear();
   last_driven_ = ros::Time();
-  startExecution(msg.data, plans_[msg.data], plan_steps_,
+  last_problem_.clear();
+  if (startExecution(msg.data, plans_[msg.data], plan_steps_,
                  rotor::planEnd(rest_pose_.value_or(rotor::RestPose{}), plan_targets_[msg.data]),
-                 corrections_);
+                 corrections_)) {
+    ++executions_;
+  }
 }
 
 bool RotorPlannerRos::startExecution(std::uint32_t index, const rotor::FigureEight& curve,
@@ -208,7 +216,7 @@ bool RotorPlannerRos::startExecution(std::uint32_t index, const rotor::FigureEig
                                                      << " rad/s) for " << timing.duration()
                                                      << " s");
   } catch (const std::invalid_argument& error) {
-    ROS_WARN_STREAM("rotor_planner: execute " << index << " refused: " << error.what());
+    refuse("execute " + std::to_string(index) + " refused: " + error.what());
     return false;
   }
   command_timer_.start();  // a correction continues in the running timer's phase
@@ -217,24 +225,23 @@ bool RotorPlannerRos::startExecution(std::uint32_t index, const rotor::FigureEig
 
 bool RotorPlannerRos::startCorrection() {
   if (execution_->corrections_left <= 0 || !rest_pose_) return false;
-  const rotor::RestPose reached = *rest_pose_;
   const rotor::RestPose& goal = execution_->goal;
-  const double miss = radius_ * std::hypot(goal.u_a - reached.u_a, goal.v_a - reached.v_a);
-  const double turn_miss = std::abs(wrapToPi(goal.psi - reached.psi));
+  const auto [miss, turn_miss] = missFrom(goal);
   if (miss <= correction_tolerance_ && turn_miss <= correction_heading_tolerance_) return false;
   rotor::PlanRequest request;
   request.k = plan_k_;
   request.steps = correction_steps_;
   request.max_radius = plan_max_radius_;
-  const rotor::PlanTarget target = rotor::correctionTarget(reached, goal);
+  const rotor::PlanTarget target = rotor::correctionTarget(*rest_pose_, goal);
   request.u_a = target.u_a;
   request.v_a = target.v_a;
   request.psi = target.psi;
   const rotor::PlanResult result = rotor::planRotorMotion(request);
   const int left = execution_->corrections_left - 1;
   if (result.solutions.empty()) {
-    ROS_WARN_STREAM("rotor_planner: " << miss << " m, " << turn_miss
-                                      << " rad off the goal, no correction: " << result.reason);
+    std::ostringstream problem;
+    problem << miss << " m, " << turn_miss << " rad off the goal, no correction: " << result.reason;
+    refuse(problem.str());
     return false;
   }
   const rotor::RotorPlan& best = result.solutions.front();
@@ -242,8 +249,47 @@ bool RotorPlannerRos::startCorrection() {
                                     << "correction " << corrections_ - left << " of "
                                     << corrections_ << ", a = " << best.a * radius_
                                     << " m, b = " << best.b * radius_ << " m");
-  return startExecution(execution_->index, rotor::FigureEight(best.a, best.b, best.gamma),
-                        correction_steps_, goal, left);
+  if (!startExecution(execution_->index, rotor::FigureEight(best.a, best.b, best.gamma),
+                      correction_steps_, goal, left)) {
+    return false;
+  }
+  ++corrections_made_;
+  return true;
+}
+
+std::pair<double, double> RotorPlannerRos::missFrom(const rotor::RestPose& goal) const {
+  const rotor::RestPose& reached = rest_pose_.value_or(rotor::RestPose{});
+  return {radius_ * std::hypot(goal.u_a - reached.u_a, goal.v_a - reached.v_a),
+          std::abs(wrapToPi(goal.psi - reached.psi))};
+}
+
+void RotorPlannerRos::refuse(const std::string& problem) {
+  ROS_WARN_STREAM("rotor_planner: " << problem);
+  last_problem_ = problem;
+  updater_.force_update();
+}
+
+void RotorPlannerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  if (execution_) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK,
+                   "executing plan " + std::to_string(execution_->index) + ", " +
+                       std::to_string(corrections_ - execution_->corrections_left) + " of " +
+                       std::to_string(corrections_) + " corrections");
+  } else if (!last_problem_.empty()) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, last_problem_);
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK,
+                   plans_.empty() ? "waiting for a plan request" : "idle");
+  }
+  status.add("plans available", plans_.size());
+  status.add("executions", executions_);
+  status.add("corrections made", corrections_made_);
+  status.add("last problem", last_problem_.empty() ? "none" : last_problem_);
+  if (last_miss_) {
+    status.addf("last end: miss [m]", "%.3e", last_miss_->first);
+    status.addf("last end: heading miss [rad]", "%.3e", last_miss_->second);
+  }
+  odom_input_.report(status, ros::Time::now());
 }
 
 void RotorPlannerRos::onCommandTimer(const ros::TimerEvent&) {
@@ -262,7 +308,10 @@ void RotorPlannerRos::onCommandTimer(const ros::TimerEvent&) {
   if (t < end + settle_ || startCorrection()) return;
   std_msgs::UInt32 done;
   done.data = execution_->index;
-  ROS_INFO_STREAM("rotor_planner: plan " << done.data << " executed");
+  last_miss_ = missFrom(execution_->goal);
+  ROS_INFO_STREAM("rotor_planner: plan " << done.data << " executed, " << last_miss_->first
+                                         << " m and " << last_miss_->second
+                                         << " rad of heading off the goal");
   execution_.reset();
   command_timer_.stop();
   driven_pub_.publish(driven_);
@@ -276,9 +325,12 @@ void RotorPlannerRos::onOdometry(const nav_msgs::Odometry& msg) {
     rest_pose_ = rotor::measuredRestPose(centre.x, centre.y, radius_,
                                          Eigen::Quaterniond(q.w, q.x, q.y, q.z));
   } catch (const std::invalid_argument& error) {
-    ROS_WARN_STREAM_THROTTLE(1.0, "rotor_planner: odom ignored: " << error.what());
+    odom_input_.reject(error.what());  // logged; the last good rest pose stays
+    updater_.update();
     return;
   }
+  odom_input_.accept(ros::Time::now());
+  updater_.update();
   if (!execution_) return;
   if (!periodDue(last_driven_, msg.header.stamp, path_period_)) return;
   last_driven_ = msg.header.stamp;

@@ -2,6 +2,7 @@
 // The rotor_planner node: the two-rotor sphere's geometric-phase planner (Svinin et al.) as a
 // service, with the chosen plan published for rviz.
 
+#include <diagnostic_updater/diagnostic_updater.h>
 #include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "spherical_robots/PlanRotorMotion.h"
+#include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/rotor/figure_eight.hpp"
 #include "spherical_robots/rotor/manoeuvre_correction.hpp"
 #include "spherical_robots/rotor/plan_execution.hpp"
@@ -52,7 +54,10 @@ namespace spherical_robots {
 /// While executing and settling it appends odom to driven_path (nav_msgs/Path, every
 /// ~path_period [s] (0.05)); at the end it publishes the index on execution_done
 /// (std_msgs/UInt32, latched). A request while executing, before any plan, or with a bad index
-/// is refused with a warning.
+/// is refused with a warning. An odom that is not finite or upside down is ignored (logged) and
+/// the last good rest pose kept. /diagnostics ("rotor planner"): executing or idle, plan and
+/// correction counts, the last refused plan request or execution, the last end's miss, and the
+/// odom input (stale after ~odom_timeout [s] (0.5), rejected count and reason).
 class RotorPlannerRos {
  public:
   /// @throw std::invalid_argument on a bad parameter.
@@ -69,6 +74,11 @@ class RotorPlannerRos {
                       const rotor::RestPose& goal, int corrections_left);
   /// After an execution has settled: plans and starts a correction if one is due and possible.
   bool startCorrection();
+  /// How far the last good rest pose is from the goal: [m] on the plane, [rad] of heading.
+  std::pair<double, double> missFrom(const rotor::RestPose& goal) const;
+  /// Logs a refusal as a warning and keeps it for /diagnostics.
+  void refuse(const std::string& problem);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
   void onCommandTimer(const ros::TimerEvent& event);
   void onOdometry(const nav_msgs::Odometry& msg);
 
@@ -110,6 +120,12 @@ class RotorPlannerRos {
   };
   std::optional<Execution> execution_;
   std::optional<rotor::RestPose> rest_pose_;  ///< from the latest valid odom
+  InputMonitor odom_input_;
+  unsigned long executions_ = 0;
+  unsigned long corrections_made_ = 0;
+  std::string last_problem_;
+  std::optional<std::pair<double, double>> last_miss_;  ///< [m], [rad] at the last end
+  diagnostic_updater::Updater updater_;
   nav_msgs::Path driven_;
   ros::Time last_driven_;
   ros::Subscriber execute_sub_;
