@@ -10,6 +10,8 @@
 #include <limits>
 #include <random>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include "spherical_robots/rotor/contact_kinematics.hpp"
 #include "spherical_robots/rotor/figure_eight.hpp"
@@ -113,6 +115,50 @@ TEST(ManoeuvreCorrection, MeasuredRestPoseReadsEq2Attitudes) {
                std::invalid_argument);  // upside down
   EXPECT_THROW(planEnd({nan, 0.0, 0.0}, {}), std::invalid_argument);
   EXPECT_THROW(correctionTarget({}, {0.0, 0.0, nan}), std::invalid_argument);
+}
+
+TEST(ManoeuvreCorrection, ContactAnglesReadEq2Attitudes) {
+  for (const auto& [u_o, v_o, psi] : {std::tuple{0.0, 0.0, 0.3}, std::tuple{2e-3, -1.5e-3, -2.0},
+                                      std::tuple{0.4, 0.3, 1.0}, std::tuple{-1.0, 0.5, 3.0}}) {
+    const Eigen::Vector2d angles = measuredContactAngles(Eigen::Quaterniond(orientation(u_o, v_o, psi)));
+    EXPECT_NEAR(angles.x(), u_o, 1e-12);
+    EXPECT_NEAR(angles.y(), v_o, 1e-12);
+  }
+  EXPECT_THROW(measuredContactAngles(Eigen::Quaterniond(0.0, 1.0, 0.0, 0.0)), std::invalid_argument);
+}
+
+// The arc traced through the plant: the contact ends at the south pole; the arc is a geodesic of
+// the angle between its ends, its tangent the derivative of its points.
+TEST(ManoeuvreCorrection, PoleReturnArcBringsTheContactBackToThePole) {
+  const double k = 2.5;
+  const CurveTiming timing(1, 1.0, 1.0);
+  for (const auto& [u_o, v_o] : {std::pair{2e-3, -1.5e-3}, std::pair{0.2, -0.1},
+                                 std::pair{-0.05, 0.3}}) {
+    const PoleReturnArc arc(u_o, v_o);
+    const Eigen::Vector3d start = contactPoint(u_o, v_o);
+    EXPECT_NEAR(arc.angle(), std::acos(-start.z()), 1e-9);
+    EXPECT_LE((arc.at(0.0).point - start).norm(), 1e-15);
+    EXPECT_LE((arc.at(2.0 * M_PI).point - Eigen::Vector3d(0.0, 0.0, -1.0)).norm(), 1e-15);
+    for (const double theta : {0.5, 2.0, 4.0}) {
+      const Eigen::Vector3d difference = (arc.at(theta + 1e-6).point - arc.at(theta - 1e-6).point) / 2e-6;
+      EXPECT_LE((difference - arc.at(theta).tangent).norm(), 1e-8);
+      EXPECT_NEAR(arc.at(theta).point.norm(), 1.0, 1e-15);
+    }
+    ContactCoordinates x{0.3, -0.2, u_o, v_o, 0.7};
+    const double hold = 1e-3;
+    for (int i = 0; i * hold < timing.duration(); ++i) {
+      x = advancePlant(k, kScale, x, arcSetPointAt(k, kScale, arc, timing, i * hold), hold, hold);
+    }
+    EXPECT_NEAR(x.u_o, 0.0, 1e-6 * (arc.angle() + 1e-3)) << "from " << u_o << ", " << v_o;
+    EXPECT_NEAR(x.v_o, 0.0, 1e-6 * (arc.angle() + 1e-3)) << "from " << u_o << ", " << v_o;
+  }
+  EXPECT_EQ(PoleReturnArc(0.0, 0.0).angle(), 0.0);
+  const RotorSpeeds still = arcSetPointAt(k, kScale, PoleReturnArc(0.0, 0.0), timing, 2.0);
+  EXPECT_EQ(still.phi1, 0.0);
+  EXPECT_EQ(still.phi2, 0.0);
+  EXPECT_THROW(PoleReturnArc(M_PI, 0.0), std::invalid_argument);
+  EXPECT_THROW(arcSetPointAt(k, kScale, PoleReturnArc(0.1, 0.0), CurveTiming(2, 1.0, 1.0), 1.0),
+               std::invalid_argument);
 }
 
 }  // namespace

@@ -156,13 +156,16 @@ TEST(RotorExecution, LagFeedForwardRestoresTheTarget) {
   const RotorPlan& plan = result.solutions.front();
   const FigureEight curve(plan.a, plan.b, plan.gamma);
   const CurveTiming timing(2, 1.0, 1.0);
+  const SetPointSchedule schedule = [&](double t) {
+    return planSetPointAt(k, kScale, curve, timing, t);
+  };
   const auto run = [&](double compensated_tau) {
     ContactCoordinates x;
     RotorSpeeds y;
     const double alpha = 1.0 - std::exp(-h / tau);
     for (long i = 0; i * h < timing.duration() + 1.0; ++i) {
       const RotorSpeeds u =
-          lagCompensatedSetPoint(k, kScale, curve, timing, i * h, compensated_tau, h);
+          lagCompensatedSetPoint(schedule, i * h, compensated_tau, h);
       x = advancePlant(k, kScale, x, y, h, h);  // the plant holds the last measured speed
       y.phi1 += alpha * (u.phi1 - y.phi1);
       y.phi2 += alpha * (u.phi2 - y.phi2);
@@ -174,10 +177,8 @@ TEST(RotorExecution, LagFeedForwardRestoresTheTarget) {
               compensated);
   EXPECT_GE(plain, 1e-3);
   EXPECT_LE(compensated, 0.05 * plain);
-  EXPECT_THROW(lagCompensatedSetPoint(k, kScale, curve, timing, 1.0, -0.1, h),
-               std::invalid_argument);
-  EXPECT_THROW(lagCompensatedSetPoint(k, kScale, curve, timing, 1.0, tau, 0.0),
-               std::invalid_argument);
+  EXPECT_THROW(lagCompensatedSetPoint(schedule, 1.0, -0.1, h), std::invalid_argument);
+  EXPECT_THROW(lagCompensatedSetPoint(schedule, 1.0, tau, 0.0), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "spherical_robots/rotor/manoeuvre_correction.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -51,6 +52,46 @@ RestPose measuredRestPose(double centre_x, double centre_y, double radius,
         "attitude has its vertical axis upside down: no rest pose at the south pole");
   }
   return {centre_x / radius, centre_y / radius, wrapToPi(-2.0 * std::atan2(q.z(), q.w()))};
+}
+
+Eigen::Vector2d measuredContactAngles(const Eigen::Quaterniond& attitude) {
+  if (!attitude.coeffs().allFinite()) throw std::invalid_argument("attitude quaternion is not finite");
+  const Eigen::Matrix3d rotation = attitude.normalized().toRotationMatrix();
+  return contactAngles(rotation.transpose() * Eigen::Vector3d(0.0, 0.0, -1.0));  // eqs 24-25
+}
+
+PoleReturnArc::PoleReturnArc(double u_o, double v_o)
+    : start_(contactPoint(u_o, v_o)), axis_(Eigen::Vector3d::UnitX()), angle_(0.0) {
+  if (!(std::cos(u_o) * std::cos(v_o) > 0.0)) {
+    throw std::invalid_argument("contact (u_o, v_o) = (" + std::to_string(u_o) + ", " +
+                                std::to_string(v_o) + ") rad is not below the sphere's equator");
+  }
+  const Eigen::Vector3d pole(0.0, 0.0, -1.0);
+  const Eigen::Vector3d normal = start_.cross(pole);
+  angle_ = std::atan2(normal.norm(), start_.dot(pole));
+  if (normal.norm() > 0.0) axis_ = normal.normalized();
+}
+
+CurvePoint PoleReturnArc::at(double theta) const {
+  requireFinite(theta, "arc parameter theta [rad]");
+  const double fraction = std::clamp(theta, 0.0, 2.0 * M_PI) / (2.0 * M_PI);
+  CurvePoint c;
+  c.point = Eigen::AngleAxisd(fraction * angle_, axis_) * start_;
+  c.tangent = angle_ / (2.0 * M_PI) * axis_.cross(c.point);
+  return c;
+}
+
+RotorSpeeds arcSetPointAt(double k, double inertia_scale, const PoleReturnArc& arc,
+                          const CurveTiming& timing, double t) {
+  if (timing.steps() != 1) {
+    throw std::invalid_argument("a pole-return arc is traced in one step, not " +
+                                std::to_string(timing.steps()));
+  }
+  const CurvePoint c = arc.at(timing.theta(t));
+  const Eigen::Vector2d angles = contactAngles(c.point);
+  // ψ = 0 and the origin: the speeds are the same at every heading and place (eq 11).
+  const ContactCoordinates at{0.0, 0.0, angles.x(), angles.y(), 0.0};
+  return rotorSpeeds(k, inertia_scale, at, curveAngularVelocity(k, c, 0.0, timing.rate(t)));
 }
 
 }  // namespace spherical_robots::rotor

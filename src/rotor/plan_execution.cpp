@@ -108,18 +108,17 @@ RotorSpeeds planSetPointAt(double k, double inertia_scale, const FigureEight& cu
   return planSetPoint(k, inertia_scale, curve, timing.steps(), timing.theta(t), timing.rate(t));
 }
 
-RotorSpeeds lagCompensatedSetPoint(double k, double inertia_scale, const FigureEight& curve,
-                                   const CurveTiming& timing, double t, double time_constant,
-                                   double h) {
+RotorSpeeds lagCompensatedSetPoint(const SetPointSchedule& schedule, double t,
+                                   double time_constant, double h) {
   requireFinite(time_constant, "actuator time constant [s]");
   if (time_constant < 0.0) {
     throw std::invalid_argument("actuator time constant [s] must be >= 0, got " +
                                 std::to_string(time_constant));
   }
   requirePositive(h, "command period [s]");
-  const RotorSpeeds now = planSetPointAt(k, inertia_scale, curve, timing, t);
+  const RotorSpeeds now = schedule(t);
   if (time_constant == 0.0) return now;
-  const RotorSpeeds next = planSetPointAt(k, inertia_scale, curve, timing, t + h);
+  const RotorSpeeds next = schedule(t + h);
   const double gain = time_constant / h;
   return {now.phi1 + gain * (next.phi1 - now.phi1), now.phi2 + gain * (next.phi2 - now.phi2)};
 }

@@ -8,9 +8,16 @@
 // not depend on the contact point on the plane nor on ψ (eq 11: ω turns with R_zᵀ(ψ)), and the
 // plane displacement turns with ω (eqs 6-7), so a plan for (u, v, ψ) traced from a rest pose
 // (u_0, v_0, ψ_0) ends at (u_0, v_0) + R_zᵀ(ψ_0) (u, v) with contact angle ψ_0 + ψ.
+// A figure eight is a closed curve on the sphere: it returns the contact to the point of the
+// sphere it started from. A run that ends with the contact off the south pole (u_o, v_o ≠ 0, a
+// tilt) needs an open curve back to the pole first: PoleReturnArc.
 // Lengths in units of R.
 
 #include <Eigen/Geometry>
+
+#include "spherical_robots/rotor/contact_curve.hpp"
+#include "spherical_robots/rotor/dynamic_realizability.hpp"
+#include "spherical_robots/rotor/plan_execution.hpp"
 
 namespace spherical_robots::rotor {
 
@@ -46,5 +53,35 @@ PlanTarget correctionTarget(const RestPose& from, const RestPose& to);
 ///        vertical axis is turned upside down (no twist to take: |q_w|, |q_z| both ~0).
 RestPose measuredRestPose(double centre_x, double centre_y, double radius,
                           const Eigen::Quaterniond& attitude);
+
+/// (u_o, v_o) [rad] of the sphere's point touching the plane (eqs 24-25) for an attitude of Σ_o
+/// in Σ_a: the plane's downward normal seen from Σ_o.
+/// @throw std::invalid_argument on a non-finite attitude or a contact on or above the equator.
+Eigen::Vector2d measuredContactAngles(const Eigen::Quaterniond& attitude);
+
+/// The great-circle arc on the sphere from the contact point (u_o, v_o) back to the south pole,
+/// at uniform speed over θ ∈ [0, 2π] (so CurveTiming with one step times it).
+class PoleReturnArc {
+ public:
+  /// @throw std::invalid_argument unless (u_o, v_o) is finite with the contact below the
+  ///        equator (cos u_o cos v_o > 0).
+  PoleReturnArc(double u_o, double v_o);
+
+  /// Length of the arc [rad] (its angle at the centre); 0 at the pole.
+  double angle() const { return angle_; }
+  /// c(θ) and c_θ, θ clamped to [0, 2π].
+  CurvePoint at(double theta) const;
+
+ private:
+  Eigen::Vector3d start_;
+  Eigen::Vector3d axis_;  ///< start × south pole, normalised: the arc turns about it
+  double angle_;
+};
+
+/// The rotor set-point [rad/s] at time t of tracing the arc with a one-step timing: eq 11
+/// (rotorSpeeds) on curveAngularVelocity, as planSetPoint does for a figure eight.
+/// @throw std::invalid_argument as rotorSpeeds(), or unless timing has one step.
+RotorSpeeds arcSetPointAt(double k, double inertia_scale, const PoleReturnArc& arc,
+                          const CurveTiming& timing, double t);
 
 }  // namespace spherical_robots::rotor

@@ -9,6 +9,8 @@
 // CurveTiming starts and ends at rest so that rate-limited rotors can follow.
 // Lengths in units of R, times in s, rotor speeds in rad/s.
 
+#include <functional>
+
 #include "spherical_robots/rotor/contact_kinematics.hpp"
 #include "spherical_robots/rotor/dynamic_realizability.hpp"
 #include "spherical_robots/rotor/figure_eight.hpp"
@@ -53,14 +55,17 @@ RotorSpeeds planSetPoint(double k, double inertia_scale, const FigureEight& curv
 RotorSpeeds planSetPointAt(double k, double inertia_scale, const FigureEight& curve,
                            const CurveTiming& timing, double t);
 
+/// Rotor set-points [rad/s] against execution time t [s]: a plan's (planSetPointAt) or another
+/// manoeuvre's (manoeuvre_correction.hpp's arcSetPointAt), bound to its curve and timing.
+using SetPointSchedule = std::function<RotorSpeeds(double t)>;
+
 /// The set-point at time t that makes rotors with a first-order lag of time_constant τ [s] >= 0
-/// follow the plan: the lag's inverse u = φ̇ + τ φ̈, φ̈ by a forward difference over h [s] > 0
+/// follow a schedule: the lag's inverse u = φ̇ + τ φ̈, φ̈ by a forward difference over h [s] > 0
 /// (the command period: u held over [t, t + h] brings the lagged speed to φ̇(t + h)). Dead time
-/// needs nothing: a delay only reparameterises the curve. τ = 0: planSetPointAt.
-/// @throw std::invalid_argument as planSetPointAt() or on a bad τ or h.
-RotorSpeeds lagCompensatedSetPoint(double k, double inertia_scale, const FigureEight& curve,
-                                   const CurveTiming& timing, double t, double time_constant,
-                                   double h);
+/// needs nothing: a delay only reparameterises the curve. τ = 0: the schedule itself.
+/// @throw std::invalid_argument as the schedule or on a bad τ or h.
+RotorSpeeds lagCompensatedSetPoint(const SetPointSchedule& schedule, double t,
+                                   double time_constant, double h);
 
 /// The largest |φ̇_i| [rad/s] along one step traced at θ̇ = 1 rad/s (speeds scale with θ̇),
 /// sampled at 2000 θ per leaf.
