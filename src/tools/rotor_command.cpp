@@ -118,6 +118,12 @@ three numbers); 4 invalid input (non-finite number, k < 0, steps < 1, max radius
 (0, 0.70710678), heading turns < 0): one-line error on stderr and no output file.
 )";
 
+/// --k, the same for rotor-step and rotor-plan.
+OptionSpec inertiaRatioOption() {
+  return {"k", "K", "Inertia ratio k = J_xx / J_zz (eq 14), >= 0 (k = 0: pure rolling).", "", true,
+          {}};
+}
+
 }  // namespace
 
 Subcommand rotorStepCommand() {
@@ -126,7 +132,7 @@ Subcommand rotorStepCommand() {
   command.summary = "One figure eight of the two-rotor sphere: state after half and one step.";
   command.description = std::string(kStepDescription) + "\n" + kConventions;
   command.options = {
-      {"k", "K", "Inertia ratio k = J_xx / J_zz (eq 14), >= 0 (k = 0: pure rolling).", "", true, {}},
+      inertiaRatioOption(),
       {"a", "A", "Euclidean radius of the first circle [R], in (0, 0.70710678).", "", true, {}},
       {"b", "B", "Euclidean radius of the second circle [R], in (0, 0.70710678).", "", true, {}},
       {"gamma", "G", "Orientation of the figure eight about the sphere's z axis [rad].", "0",
@@ -143,7 +149,7 @@ Subcommand rotorPlanCommand() {
   command.summary = "n-step geometric-phase motion planning of the two-rotor sphere.";
   command.description = std::string(kPlanDescription) + "\n" + kConventions;
   command.options = {
-      {"k", "K", "Inertia ratio k = J_xx / J_zz (eq 14), >= 0 (k = 0: pure rolling).", "", true, {}},
+      inertiaRatioOption(),
       {"steps", "N", "Number of figure eights n, a whole number >= 1.", "", true, {}},
       {"target", "U,V,PSI",
        "Target contact point (U, V) on the plane [R] and accumulated heading PSI [rad].", "", true,
