@@ -153,9 +153,7 @@ void FreebotPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat
   const freebot::LinkPose end = chain_.manipulator().endEffector(state_.joints);
   status.addf("end-effector [m]", "%.6f, %.6f, %.6f", end.position.x(), end.position.y(),
               end.position.z());
-  status.add("real-time factor", clock_->realTimeFactor());
-  timeline_.report(status, now);
-  actuator_input_.report(status, now);
+  reportPlantHealth(status, now, *clock_, timeline_, actuator_input_);
 }
 
 }  // namespace spherical_robots
