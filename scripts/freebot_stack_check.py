@@ -8,9 +8,8 @@ end-effector's tf after arrival; ~arrival_time [s] simulated; ~hold_bound [m] on
 end-effector may move after an unreachable verdict. The last test kills freebot_ik to fire the
 hardware's watchdog (docs/hardware_interface.md): it needs ideal actuators (exact zeros).
 """
+import functools
 import math
-import threading
-import time
 import unittest
 
 import rosnode
@@ -23,6 +22,8 @@ from sensor_msgs.msg import JointState
 
 from spherical_robots.msg import FreebotGoalResult, FreebotState
 from spherical_robots.srv import SolveFreebotIk
+import spherical_robots_testing as testing
+from spherical_robots_testing import Recorder, first_at_rest, quaternion_angle
 
 PKG = 'spherical_robots'
 NAME = 'freebot_stack_check'
@@ -34,38 +35,9 @@ FINAL = (FreebotGoalResult.ARRIVED, FreebotGoalResult.UNREACHABLE, FreebotGoalRe
          FreebotGoalResult.ABORTED)
 
 
-class Recorder:
-    """Keeps every message of a topic, with the simulated time it arrived."""
-
-    def __init__(self, topic, msg_type):
-        self.lock = threading.Lock()
-        self.messages = []
-        self.subscriber = rospy.Subscriber(topic, msg_type, self.callback, queue_size=1000)
-
-    def callback(self, msg):
-        with self.lock:
-            self.messages.append((rospy.Time.now().to_sec(), msg))
-
-    def count(self):
-        with self.lock:
-            return len(self.messages)
-
-    def since(self, index):
-        with self.lock:
-            return [msg for _, msg in self.messages[index:]]
-
-
-def wait_until(condition, what, timeout=WALL_DEADLINE):
-    deadline = time.time() + timeout
-    while not condition():
-        if time.time() > deadline or rospy.is_shutdown():
-            raise AssertionError('timed out after %.0f s (wall) waiting for %s' % (timeout, what))
-        time.sleep(0.05)
-
-
-def sim_sleep(seconds):
-    end = rospy.Time.now().to_sec() + seconds
-    wait_until(lambda: rospy.Time.now().to_sec() >= end, '%.1f s of simulated time' % seconds)
+# Every wait of this script is bounded by WALL_DEADLINE.
+wait_until = functools.partial(testing.wait_until, timeout=WALL_DEADLINE)
+sim_sleep = functools.partial(testing.sim_sleep, timeout=WALL_DEADLINE)
 
 
 def pose_of(values):
@@ -75,14 +47,6 @@ def pose_of(values):
         o = pose.orientation
         o.w, o.x, o.y, o.z = values[3:]
     return pose
-
-
-def quaternion_angle(a, b):
-    """The angle [rad] between two unit quaternions given as (w, x, y, z)."""
-    na = math.sqrt(sum(c * c for c in a))
-    nb = math.sqrt(sum(c * c for c in b))
-    dot = abs(sum(x * y for x, y in zip(a, b))) / (na * nb)
-    return 2.0 * math.acos(min(1.0, dot))
 
 
 class FreebotStackCheck(unittest.TestCase):
@@ -224,12 +188,9 @@ class FreebotStackCheck(unittest.TestCase):
         bad_nan = JointState(name=names, velocity=[float('nan')] + [0.0] * (len(names) - 1))
         bad_missing = JointState(name=names[1:], velocity=[0.0] * (len(names) - 1))
         key = rospy.resolve_name('actuators/state') + ' rejected'
-        deadline = time.time() + WALL_DEADLINE
-        while int(self.value(PLANT_STATUS, key) or 0) < 2:
-            self.assertLess(time.time(), deadline, 'the plant never reported 2 rejections')
-            publisher.publish(bad_nan)
-            publisher.publish(bad_missing)
-            time.sleep(0.2)
+        testing.publish_until(publisher, [bad_nan, bad_missing],
+                              lambda: int(self.value(PLANT_STATUS, key) or 0) >= 2,
+                              'the plant to report 2 rejections', WALL_DEADLINE)
         count = self.states.count()
         sim_sleep(1.0)
         self.assertGreater(self.states.count(), count + 50, 'freebot_state stopped')
@@ -258,15 +219,10 @@ class FreebotStackCheck(unittest.TestCase):
         rosnode.kill_nodes([node])
         wait_until(lambda: not rosnode.rosnode_ping(node, max_count=1), 'freebot_ik to die')
         wait_until(lambda: commands.count() > 0, 'a recorded command')
-        last_command = commands.messages[-1][0]
-
-        def first_at_rest():
-            with self.actuators.lock:
-                return next((m.header.stamp.to_sec() for _, m in self.actuators.messages
-                             if m.header.stamp.to_sec() >= last_command and
-                             all(v == 0.0 for v in m.velocity)), None)
-        wait_until(lambda: first_at_rest() is not None, 'every wheel at rest')
-        at_rest = first_at_rest() - last_command
+        last_command = commands.timed_since(0)[-1][0]
+        wait_until(lambda: first_at_rest(self.actuators, last_command) is not None,
+                   'every wheel at rest')
+        at_rest = first_at_rest(self.actuators, last_command).header.stamp.to_sec() - last_command
         bound = timeout + speed / acceleration + period
         sim_sleep(0.5)
         before = self.end_effector()[0]

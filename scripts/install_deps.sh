@@ -7,7 +7,7 @@ packages=(
   python3-colcon-test-result python3-colcon-output python3-colcon-parallel-executor
   python3-colcon-recursive-crawl python3-colcon-package-information python3-colcon-library-path
   python3-colcon-defaults python3-colcon-pkg-config python3-colcon-package-selection
-  python3-catkin-pkg ros-message-generation ros-message-runtime
+  python3-catkin-pkg python3-setuptools ros-message-generation ros-message-runtime
   # ROS libraries and messages
   ros-base-dev libtf2-ros-dev libtf2-msgs-dev
   libnav-msgs-dev libvisualization-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev

@@ -9,8 +9,8 @@ set-points stream on actuators/command as rotor_1, rotor_2 within ~max_velocity 
 driven_path ends where odom does, joint_states name both rotors, tf world -> <prefix>base_link.
 Prints the end error (docs/results.md quotes it).
 """
+import functools
 import math
-import threading
 import time
 import unittest
 
@@ -22,49 +22,16 @@ from sensor_msgs.msg import JointState
 from std_msgs.msg import UInt32
 
 from spherical_robots.srv import PlanRotorMotion, PlanRotorMotionRequest
+import spherical_robots_testing as testing
+from spherical_robots_testing import Recorder, quaternion_angle
 
 PKG = 'spherical_robots'
 WALL_DEADLINE = 150.0  # [s] wall, for the whole execution (about 14 s simulated)
 RADIUS = 0.1           # [m], launch/rotor_stack.launch
 
 
-class Latest:
-    """The last message of a topic and all of them."""
-
-    def __init__(self, topic, msg_type, keep=False):
-        self.lock = threading.Lock()
-        self.messages = []
-        self.keep = keep
-        rospy.Subscriber(topic, msg_type, self.callback, queue_size=1000)
-
-    def callback(self, msg):
-        with self.lock:
-            if self.keep or not self.messages:
-                self.messages.append(msg)
-            else:
-                self.messages[-1] = msg
-
-    def last(self):
-        with self.lock:
-            return self.messages[-1] if self.messages else None
-
-    def all(self):
-        with self.lock:
-            return list(self.messages)
-
-
-def wait_until(condition, what, timeout=WALL_DEADLINE):
-    deadline = time.time() + timeout
-    while not condition():
-        if time.time() > deadline or rospy.is_shutdown():
-            raise AssertionError('timed out after %.0f s (wall) waiting for %s' % (timeout, what))
-        time.sleep(0.05)
-
-
-def quaternion_angle(a, b):
-    """Angle [rad] between two orientations given as (w, x, y, z)."""
-    dot = abs(sum(x * y for x, y in zip(a, b)))
-    return 2.0 * math.acos(min(1.0, dot))
+# Every wait of this script is bounded by WALL_DEADLINE.
+wait_until = functools.partial(testing.wait_until, timeout=WALL_DEADLINE)
 
 
 class RotorStackCheck(unittest.TestCase):
@@ -78,11 +45,11 @@ class RotorStackCheck(unittest.TestCase):
         cls.position_bound = float(rospy.get_param('~position_bound'))
         cls.attitude_bound = float(rospy.get_param('~attitude_bound'))
         cls.max_velocity = rospy.get_param('~max_velocity', 25.0)
-        cls.odom = Latest('odom', Odometry)
-        cls.joints = Latest('joint_states', JointState)
-        cls.commands = Latest('actuators/command', JointState, keep=True)
-        cls.driven = Latest('driven_path', Path)
-        cls.done = Latest('execution_done', UInt32)
+        cls.odom = Recorder('odom', Odometry)
+        cls.joints = Recorder('joint_states', JointState)
+        cls.commands = Recorder('actuators/command', JointState)
+        cls.driven = Recorder('driven_path', Path)
+        cls.done = Recorder('execution_done', UInt32)
         cls.tf_buffer = tf2_ros.Buffer()
         cls.tf_listener = tf2_ros.TransformListener(cls.tf_buffer)
 
@@ -114,7 +81,7 @@ class RotorStackCheck(unittest.TestCase):
         self.assertLessEqual(angle, self.attitude_bound)
         self.assertAlmostEqual(pose.position.z, RADIUS, delta=1e-9)
 
-        commands = self.commands.all()
+        commands = self.commands.since(0)
         self.assertGreater(len(commands), 100)
         for msg in commands:
             self.assertEqual(list(msg.name), ['rotor_1', 'rotor_2'])

@@ -8,8 +8,8 @@ Runs in the stack's namespace (test/terrain_*.test, test/roller_*.test). Private
 matters (tracking error) and tight where the maths is exact (the contact point lies on the surface,
 which the plant never integrates off).
 """
+import functools
 import math
-import threading
 import time
 import unittest
 
@@ -24,6 +24,8 @@ from sensor_msgs.msg import JointState
 from std_msgs.msg import Bool
 
 from spherical_robots.msg import NormaState, RollerDrive, TerrainState, TrackingError
+import spherical_robots_testing as testing
+from spherical_robots_testing import Recorder, first_at_rest
 
 PKG = 'spherical_robots'
 NAME = 'stack_check'
@@ -36,67 +38,16 @@ NODES = ['terrain_kinematics', 'pure_pursuit_controller', 'hardware_interface',
          'robot_state_publisher']
 
 
-class Recorder:
-    """Keeps every message of a topic, with the simulated time it arrived."""
-
-    def __init__(self, topic, msg_type):
-        self.lock = threading.Lock()
-        self.messages = []
-        self.subscriber = rospy.Subscriber(topic, msg_type, self.callback, queue_size=1000)
-
-    def callback(self, msg):
-        with self.lock:
-            self.messages.append((rospy.Time.now().to_sec(), msg))
-
-    def count(self):
-        with self.lock:
-            return len(self.messages)
-
-    def last(self):
-        with self.lock:
-            return self.messages[-1][1] if self.messages else None
-
-    def since(self, index):
-        with self.lock:
-            return [msg for _, msg in self.messages[index:]]
-
-    def timed_since(self, t):
-        """(arrival time, message) pairs that arrived at simulated time t or later."""
-        with self.lock:
-            return [(at, msg) for at, msg in self.messages if at >= t]
-
-
-def wait_until(condition, what, timeout=WALL_DEADLINE):
-    deadline = time.time() + timeout
-    while not condition():
-        if time.time() > deadline or rospy.is_shutdown():
-            raise AssertionError('timed out after %.0f s (wall) waiting for %s' % (timeout, what))
-        time.sleep(0.05)
-
-
-def sim_sleep(seconds):
-    """Sleeps `seconds` of simulated time, bounded by the wall deadline."""
-    end = rospy.Time.now().to_sec() + seconds
-    wait_until(lambda: rospy.Time.now().to_sec() >= end, '%.1f s of simulated time' % seconds)
+# Every wait of this script is bounded by WALL_DEADLINE unless it says otherwise.
+wait_until = functools.partial(testing.wait_until, timeout=WALL_DEADLINE)
+sim_sleep = functools.partial(testing.sim_sleep, timeout=WALL_DEADLINE)
+publish_until = functools.partial(testing.publish_until, timeout=WALL_DEADLINE)
 
 
 def publish_when_connected(publisher, msg):
     wait_until(lambda: publisher.get_num_connections() > 0,
                'a subscriber on ' + publisher.resolved_name)
     publisher.publish(msg)
-
-
-def publish_until(publisher, messages, condition, what):
-    """Publishes the messages every 0.2 s (wall) until condition holds. The test node subscribes to
-    some of the topics it publishes bad messages on, so get_num_connections() cannot tell whether
-    the node under test is connected yet: repeat until it reports the messages."""
-    deadline = time.time() + WALL_DEADLINE
-    while not condition():
-        if time.time() > deadline or rospy.is_shutdown():
-            raise AssertionError('timed out after %.0f s (wall) waiting for %s' % (WALL_DEADLINE, what))
-        for msg in messages:
-            publisher.publish(msg)
-        time.sleep(0.2)
 
 
 def tracking_in_window(errors):
@@ -325,13 +276,6 @@ class SeamCheck(StackFixture):
                     return status.level, status.message
         return None, None
 
-    def first_state_at_rest_since(self, t):
-        """The first actuators/state stamped at or after t with every velocity exactly 0."""
-        for _, msg in self.actuators.timed_since(t):
-            if msg.header.stamp.to_sec() >= t and all(v == 0.0 for v in msg.velocity):
-                return msg
-        return None
-
     def test_01_tracks_within_bounds(self):
         mean, worst = tracking_in_window(self.errors)
         self.assertLess(mean, float(rospy.get_param('~mean_bound')))
@@ -345,8 +289,8 @@ class SeamCheck(StackFixture):
         self.e_stop_pub.publish(Bool(data=True))
         # Stopped at once (not ramped): the first state at rest is the one sent on the e-stop, a
         # few ms of wall time later, i.e. within SLACK of simulated time at 10x.
-        wait_until(lambda: self.first_state_at_rest_since(engaged) is not None, 'the e-stop')
-        stopped = self.first_state_at_rest_since(engaged).header.stamp.to_sec()
+        wait_until(lambda: first_at_rest(self.actuators, engaged) is not None, 'the e-stop')
+        stopped = first_at_rest(self.actuators, engaged).header.stamp.to_sec()
         rospy.loginfo('e-stop: at rest %.3f s (simulated) after it was published',
                       stopped - engaged)
         self.assertLess(stopped - engaged, self.period + SLACK)
@@ -370,9 +314,9 @@ class SeamCheck(StackFixture):
         wait_until(lambda: not rosnode.rosnode_ping(controller, max_count=1), 'the controller to die')
         last_command = self.commands.timed_since(0)[-1][0]
         bound = self.timeout + speed / self.max_acceleration + self.period
-        wait_until(lambda: self.first_state_at_rest_since(last_command) is not None,
+        wait_until(lambda: first_at_rest(self.actuators, last_command) is not None,
                    'the watchdog to bring every actuator to rest')
-        at_rest = self.first_state_at_rest_since(last_command).header.stamp.to_sec()
+        at_rest = first_at_rest(self.actuators, last_command).header.stamp.to_sec()
         rospy.loginfo('watchdog: at rest %.3f s (simulated) after the last command; bound '
                       'timeout + |v|/a + one period = %.3f s', at_rest - last_command, bound)
         self.assertLess(at_rest - last_command, bound + SLACK)

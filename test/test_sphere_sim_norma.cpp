@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "sphere_sim_process.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -22,12 +24,7 @@ const std::vector<std::string> kColumns = {
     "t",   "theta", "alpha", "phi", "delta", "thetad", "alphad", "phid", "deltad",
     "X",   "Y",     "psi",   "Xd",  "Yd",    "err",    "T",      "F",    "energy"};
 
-std::string readFile(const fs::path& path) {
-  std::ifstream file(path);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
+using sphere_sim_test::readFile;
 
 struct Result {
   int status = -1;
@@ -58,15 +55,16 @@ class SphereSimNormaTest : public ::testing::Test {
   Result norma(const std::string& args,
                const std::string& config = SPHERICAL_ROBOTS_SOURCE_DIR) const {
     const fs::path csv = dir_ / "run.csv";
-    const std::string command = std::string("'") + SPHERE_SIM_EXECUTABLE + "' norma " + args +
-                                " --config '" + config + "' --out '" + csv.string() + "' > '" +
-                                (dir_ / "out").string() +
-                                "' 2> '" + (dir_ / "err").string() + "'";
+    std::vector<std::string> argv = {"norma"};
+    std::istringstream words(args);
+    for (std::string word; words >> word;) argv.push_back(word);
+    argv.insert(argv.end(), {"--config", config, "--out", csv.string()});
+    const sphere_sim_test::Process process =
+        sphere_sim_test::runIn(SPHERE_SIM_EXECUTABLE, argv, dir_);
     Result r;
-    const int raw = std::system(command.c_str());
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = readFile(dir_ / "out");
-    r.err = readFile(dir_ / "err");
+    r.status = process.status;
+    r.out = process.out;
+    r.err = process.err;
     std::ifstream file(csv);
     std::string line;
     if (std::getline(file, line)) {

@@ -3,36 +3,22 @@
 // a2 with their γ), and the command-line contract (exit statuses 0/2/3/4, output file only when
 // the run succeeds or has no solution, errors naming the parameter).
 
-#include <fcntl.h>
 #include <gtest/gtest.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
+
+#include "sphere_sim_process.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Process {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string readFile(const fs::path& path) {
-  std::ifstream file(path);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
+using sphere_sim_test::Process;
+using sphere_sim_test::readFile;
 
 /// Every number written as `"key": number` in order of appearance.
 std::vector<double> numbersOf(const std::string& json, const std::string& key) {
@@ -57,32 +43,10 @@ class SphereSimRotorTest : public ::testing::Test {
 
   /// sphere_sim with args and --out out_.
   Process run(std::vector<std::string> args) const {
-    args.insert(args.begin(), SPHERE_SIM_EXECUTABLE);
     args.push_back("--out");
     args.push_back(out_.string());
-    std::vector<char*> argv;
-    for (std::string& arg : args) argv.push_back(arg.data());
-    argv.push_back(nullptr);
-    const fs::path out_path = dir_ / "stdout.txt", err_path = dir_ / "stderr.txt";
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                     0644);
-    posix_spawn_file_actions_addopen(&actions, 2, err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                     0644);
-    pid_t pid = 0;
-    const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    Process process;
-    if (spawned != 0) {
-      ADD_FAILURE() << "cannot start " << argv[0];
-      return process;
-    }
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    process.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    process.out = readFile(out_path);
-    process.err = readFile(err_path);
+    const Process process = sphere_sim_test::runIn(SPHERE_SIM_EXECUTABLE, args, dir_);
+    if (process.status == -1) ADD_FAILURE() << "cannot start or finish " << SPHERE_SIM_EXECUTABLE;
     return process;
   }
 

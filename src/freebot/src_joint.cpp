@@ -10,12 +10,6 @@
 namespace spherical_robots::freebot {
 namespace {
 
-Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d m;
-  m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return m;
-}
-
 void requireFiniteVelocity(const Eigen::Vector2d& joint_velocity) {
   requireFinite(joint_velocity.x(), "joint velocity omega_x [rad/s]");
   requireFinite(joint_velocity.y(), "joint velocity omega_y [rad/s]");
@@ -57,6 +51,12 @@ Eigen::Vector3d rotationVector(const Eigen::Quaterniond& q) {
   }
   const double angle = 2.0 * std::atan2(s, sign * q.w());
   return angle / s * v;
+}
+
+Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d m;
+  m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return m;
 }
 
 void requireUnit(const Eigen::Quaterniond& q, const char* what) {

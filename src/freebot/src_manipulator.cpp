@@ -4,15 +4,6 @@
 #include <string>
 
 namespace spherical_robots::freebot {
-namespace {
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d m;
-  m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return m;
-}
-
-}  // namespace
 
 SrcManipulator::SrcManipulator(const std::vector<double>& radii) : radii_(radii) {
   if (radii_.size() < 2) {

@@ -74,16 +74,8 @@ FreebotPlantRos::FreebotPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   ROS_INFO_STREAM("FreeBOT chain: " << chain_.moduleCount() << " modules, radii [" << radii.str()
                                     << "] m, reach " << chain_.manipulator().reach()
                                     << " m; step " << step_ << " s");
-  const bool publish_clock = boolParam(pnh, "publish_clock", false);
-  const double speedup = publish_clock ? numberParam(pnh, "speedup", 1.0) : 0.0;
-  const int expected_subscribers = static_cast<int>(numberParam(pnh, "wait_for_subscribers", 1.0));
-  clock_ = std::make_unique<SimClock>(
-      nh, step_, speedup, [this](const ros::Time& now) { tick(now); },
-      [this, expected_subscribers] {
-        return static_cast<int>(state_pub_.getNumSubscribers()) >= expected_subscribers &&
-               actuator_sub_.getNumPublishers() > 0;
-      },
-      positiveParam(pnh, "start_timeout", 10.0));
+  clock_ = makePlantClock(nh, pnh, step_, 1.0, [this](const ros::Time& now) { tick(now); },
+                          state_pub_, actuator_sub_);
 }
 
 void FreebotPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
@@ -161,9 +153,7 @@ void FreebotPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat
   const freebot::LinkPose end = chain_.manipulator().endEffector(state_.joints);
   status.addf("end-effector [m]", "%.6f, %.6f, %.6f", end.position.x(), end.position.y(),
               end.position.z());
-  status.add("real-time factor", clock_->realTimeFactor());
-  timeline_.report(status, now);
-  actuator_input_.report(status, now);
+  reportPlantHealth(status, now, *clock_, timeline_, actuator_input_);
 }
 
 }  // namespace spherical_robots

@@ -152,13 +152,11 @@ void NormaPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status
   status.add("psi [rad]", state_.psi);
   status.add("phi [rad]", state_.q(2));
   status.add("delta [m]", state_.q(3));
-  status.add("real-time factor", clock_->realTimeFactor());
-  timeline_.report(status, now);
+  reportPlantHealth(status, now, *clock_, timeline_, actuator_input_);
   // The slider leaves the shaft's ends (|delta0 + delta| > R): the model no longer holds.
   const auto& p = dynamics_.parameters();
   if (std::abs(p.delta0 + state_.q(3)) > p.R)
     status.mergeSummary(diagnostic_msgs::DiagnosticStatus::WARN, "slider beyond the shaft's end");
-  actuator_input_.report(status, now);
 }
 
 }  // namespace spherical_robots

@@ -5,6 +5,9 @@
 
 #include <exception>
 
+#include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/sim_clock.hpp"
+
 namespace spherical_robots {
 
 void PlantTimeline::tick(const ros::Time& now, const std::function<void(double elapsed)>& advance) {
@@ -39,6 +42,13 @@ void PlantTimeline::report(diagnostic_updater::DiagnosticStatusWrapper& status,
   if (failures_ > failures_at_last_report_)
     status.mergeSummary(diagnostic_msgs::DiagnosticStatus::ERROR, "integration failed");
   failures_at_last_report_ = failures_;
+}
+
+void reportPlantHealth(diagnostic_updater::DiagnosticStatusWrapper& status, const ros::Time& now,
+                       const SimClock& clock, PlantTimeline& timeline, InputMonitor& actuators) {
+  status.add("real-time factor", clock.realTimeFactor());
+  timeline.report(status, now);
+  actuators.report(status, now);
 }
 
 }  // namespace spherical_robots

@@ -113,9 +113,7 @@ void RotorPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status
   status.add("u_o [rad]", state_.u_o);
   status.add("v_o [rad]", state_.v_o);
   status.add("psi [rad]", state_.psi);
-  status.add("real-time factor", clock_->realTimeFactor());
-  timeline_.report(status, now);
-  actuator_input_.report(status, now);
+  reportPlantHealth(status, now, *clock_, timeline_, actuator_input_);
 }
 
 }  // namespace spherical_robots

@@ -131,9 +131,7 @@ void TerrainPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat
   status.add("y [m]", state_.y);
   status.add("psi [rad]", state_.psi);
   status.add("phi [rad]", state_.phi);
-  status.add("real-time factor", clock_->realTimeFactor());
-  timeline_.report(status, now);
-  actuator_input_.report(status, now);
+  reportPlantHealth(status, now, *clock_, timeline_, actuator_input_);
 }
 
 }  // namespace spherical_robots

@@ -175,14 +175,6 @@ within 1e-9).
 
 // --- freebot-ik ---------------------------------------------------------------------------------
 
-int integerOption(const ParsedOptions& options, const std::string& name) {
-  const double value = options.number(name);
-  if (value != std::floor(value) || std::abs(value) > 1e9) {
-    throw UsageError("--" + name + ": '" + options.text(name) + "' is not an integer");
-  }
-  return static_cast<int>(value);
-}
-
 int runIk(const ParsedOptions& options, std::ostream& out) {
   const std::vector<double> radii = radiiFrom(options);
   const std::size_t count = radii.size() - 1;
@@ -197,8 +189,8 @@ int runIk(const ParsedOptions& options, std::ostream& out) {
       options.flag("position-only") || target.size() == 3 ? IkMode::PositionOnly : IkMode::FullPose;
   ik.position_tolerance = options.number("position-tolerance");
   ik.orientation_tolerance = options.number("orientation-tolerance");
-  ik.restarts = integerOption(options, "restarts");
-  const int random_seed = integerOption(options, "random-seed");
+  ik.restarts = options.integer("restarts");
+  const int random_seed = options.integer("random-seed");
   if (random_seed < 0) {
     throw InvalidInput("--random-seed must be >= 0, got " + options.text("random-seed"));
   }

@@ -1,7 +1,5 @@
 #include "rotor_command.hpp"
 
-#include <cmath>
-#include <limits>
 #include <ostream>
 #include <vector>
 
@@ -10,15 +8,6 @@
 
 namespace spherical_robots::sphere_sim {
 namespace {
-
-/// An option that must hold a whole number; a fraction is malformed (exit 2).
-int wholeNumber(const ParsedOptions& options, const std::string& name) {
-  const double value = options.number(name);
-  if (value != std::floor(value) || std::abs(value) > std::numeric_limits<int>::max()) {
-    throw UsageError("--" + name + " needs a whole number, got " + options.text(name));
-  }
-  return static_cast<int>(value);
-}
 
 void writeState(JsonWriter& json, const char* key, const rotor::PlaneState& state) {
   json.beginObject(key).number("u", state.u_a).number("v", state.v_a).number("psi", state.psi).end();
@@ -44,13 +33,13 @@ int runRotorStep(const ParsedOptions& options, std::ostream& out) {
 int runRotorPlan(const ParsedOptions& options, std::ostream& out) {
   rotor::PlanRequest request;
   request.k = options.number("k");
-  request.steps = wholeNumber(options, "steps");
+  request.steps = options.integer("steps");
   const std::vector<double> target = options.numberList("target", 3);
   request.u_a = target[0];
   request.v_a = target[1];
   request.psi = target[2];
   request.max_radius = options.number("max-radius");
-  request.heading_turns = wholeNumber(options, "heading-turns");
+  request.heading_turns = options.integer("heading-turns");
   const rotor::PlanResult result = rotor::planRotorMotion(request);
   OutputFile file(options.text("out"));
   JsonWriter json(file.stream());
@@ -129,6 +118,12 @@ three numbers); 4 invalid input (non-finite number, k < 0, steps < 1, max radius
 (0, 0.70710678), heading turns < 0): one-line error on stderr and no output file.
 )";
 
+/// --k, the same for rotor-step and rotor-plan.
+OptionSpec inertiaRatioOption() {
+  return {"k", "K", "Inertia ratio k = J_xx / J_zz (eq 14), >= 0 (k = 0: pure rolling).", "", true,
+          {}};
+}
+
 }  // namespace
 
 Subcommand rotorStepCommand() {
@@ -137,7 +132,7 @@ Subcommand rotorStepCommand() {
   command.summary = "One figure eight of the two-rotor sphere: state after half and one step.";
   command.description = std::string(kStepDescription) + "\n" + kConventions;
   command.options = {
-      {"k", "K", "Inertia ratio k = J_xx / J_zz (eq 14), >= 0 (k = 0: pure rolling).", "", true, {}},
+      inertiaRatioOption(),
       {"a", "A", "Euclidean radius of the first circle [R], in (0, 0.70710678).", "", true, {}},
       {"b", "B", "Euclidean radius of the second circle [R], in (0, 0.70710678).", "", true, {}},
       {"gamma", "G", "Orientation of the figure eight about the sphere's z axis [rad].", "0",
@@ -154,7 +149,7 @@ Subcommand rotorPlanCommand() {
   command.summary = "n-step geometric-phase motion planning of the two-rotor sphere.";
   command.description = std::string(kPlanDescription) + "\n" + kConventions;
   command.options = {
-      {"k", "K", "Inertia ratio k = J_xx / J_zz (eq 14), >= 0 (k = 0: pure rolling).", "", true, {}},
+      inertiaRatioOption(),
       {"steps", "N", "Number of figure eights n, a whole number >= 1.", "", true, {}},
       {"target", "U,V,PSI",
        "Target contact point (U, V) on the plane [R] and accumulated heading PSI [rad].", "", true,

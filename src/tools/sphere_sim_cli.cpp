@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <system_error>
@@ -120,6 +121,14 @@ const std::string& ParsedOptions::text(const std::string& name) const {
 
 double ParsedOptions::number(const std::string& name) const {
   return parseNumber(name, text(name));
+}
+
+int ParsedOptions::integer(const std::string& name) const {
+  const double value = number(name);
+  if (value != std::floor(value) || std::abs(value) > std::numeric_limits<int>::max()) {
+    throw UsageError("--" + name + ": '" + text(name) + "' is not an integer");
+  }
+  return static_cast<int>(value);
 }
 
 std::vector<double> ParsedOptions::numberList(const std::string& name, std::size_t count) const {

@@ -69,6 +69,9 @@ class ParsedOptions {
   /// The value as a finite double. @throw UsageError if it is not a number, InvalidInput if it
   /// is nan, inf or out of a double's range.
   double number(const std::string& name) const;
+  /// The value as an int (counts, seeds). @throw as number(), and UsageError if it is not a whole
+  /// number within an int's range.
+  int integer(const std::string& name) const;
   /// A comma-separated list of finite doubles; count 0 accepts any length >= 1.
   /// @throw UsageError on a malformed element or a wrong count, InvalidInput on a non-finite one.
   std::vector<double> numberList(const std::string& name, std::size_t count = 0) const;

@@ -48,6 +48,9 @@ Eigen::Quaterniond rotationQuaternion(const Eigen::Vector3d& rotation_vector);
 /// The rotation vector [rad] of unit q, angle in [0, π].
 Eigen::Vector3d rotationVector(const Eigen::Quaterniond& q);
 
+/// The cross-product matrix of v: skew(v) u = v × u.
+Eigen::Matrix3d skew(const Eigen::Vector3d& v);
+
 /// @throw std::invalid_argument naming `what` if q has a non-finite coefficient or
 /// |‖q‖ − 1| > kUnitTolerance.
 void requireUnit(const Eigen::Quaterniond& q, const char* what);

@@ -11,6 +11,9 @@
 
 namespace spherical_robots {
 
+class InputMonitor;
+class SimClock;
+
 class PlantTimeline {
  public:
   /// @param duration [s] of ROS time after the first tick; 0 (or less): forever.
@@ -38,5 +41,10 @@ class PlantTimeline {
   unsigned long failures_at_last_report_ = 0;
   bool finished_ = false;
 };
+
+/// What every plant's diagnostics add after its own figures: the clock's "real-time factor", then
+/// timeline.report() and actuators.report(), which may raise the status to ERROR or WARN.
+void reportPlantHealth(diagnostic_updater::DiagnosticStatusWrapper& status, const ros::Time& now,
+                       const SimClock& clock, PlantTimeline& timeline, InputMonitor& actuators);
 
 }  // namespace spherical_robots

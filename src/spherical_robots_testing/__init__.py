@@ -1,0 +1,95 @@
+"""What the package's rostest scripts share (scripts/stack_check.py, freebot_stack_check.py,
+rotor_stack_check.py): a topic recorder that notes each message's simulated arrival time, and
+waits on conditions and on simulated time, each bounded by a wall-clock deadline so that a stack
+that never gets there fails the test instead of hanging it.
+
+Installed by catkin_python_setup() (setup.py), so `import spherical_robots_testing` works from
+the devel and the install space alike.
+"""
+import math
+import threading
+import time
+
+import rospy
+
+__all__ = ['Recorder', 'wait_until', 'sim_sleep', 'publish_until', 'first_at_rest',
+           'quaternion_angle']
+
+
+class Recorder:
+    """Keeps every message of a topic, with the simulated time it arrived."""
+
+    def __init__(self, topic, msg_type):
+        self.lock = threading.Lock()
+        self.messages = []
+        self.subscriber = rospy.Subscriber(topic, msg_type, self.callback, queue_size=1000)
+
+    def callback(self, msg):
+        with self.lock:
+            self.messages.append((rospy.Time.now().to_sec(), msg))
+
+    def count(self):
+        with self.lock:
+            return len(self.messages)
+
+    def last(self):
+        with self.lock:
+            return self.messages[-1][1] if self.messages else None
+
+    def since(self, index):
+        with self.lock:
+            return [msg for _, msg in self.messages[index:]]
+
+    def timed_since(self, t):
+        """(arrival time, message) pairs that arrived at simulated time t or later."""
+        with self.lock:
+            return [(at, msg) for at, msg in self.messages if at >= t]
+
+
+def wait_until(condition, what, timeout):
+    """Polls condition every 0.05 s (wall) until it holds. @throw AssertionError naming `what`
+    after `timeout` [s] of wall time, or when the node shuts down."""
+    deadline = time.time() + timeout
+    while not condition():
+        if time.time() > deadline or rospy.is_shutdown():
+            raise AssertionError('timed out after %.0f s (wall) waiting for %s' % (timeout, what))
+        time.sleep(0.05)
+
+
+def sim_sleep(seconds, timeout):
+    """Sleeps `seconds` of simulated time, bounded by `timeout` [s] of wall time."""
+    end = rospy.Time.now().to_sec() + seconds
+    wait_until(lambda: rospy.Time.now().to_sec() >= end, '%.1f s of simulated time' % seconds,
+               timeout)
+
+
+def publish_until(publisher, messages, condition, what, timeout):
+    """Publishes the messages every 0.2 s (wall) until condition holds, at most `timeout` [s] of
+    wall time. For bad messages the node under test only counts: a test node that also
+    subscribes to the topic cannot tell from get_num_connections() whether that node is
+    connected yet, so it repeats until the node reports them."""
+    deadline = time.time() + timeout
+    while not condition():
+        if time.time() > deadline or rospy.is_shutdown():
+            raise AssertionError('timed out after %.0f s (wall) waiting for %s' % (timeout, what))
+        for msg in messages:
+            publisher.publish(msg)
+        time.sleep(0.2)
+
+
+def first_at_rest(states, t):
+    """The first JointState a Recorder of actuators/state holds that is stamped at or after
+    simulated time t with every velocity exactly 0 (what a watchdog or an e-stop sends), or None."""
+    for _, msg in states.timed_since(t):
+        if msg.header.stamp.to_sec() >= t and all(v == 0.0 for v in msg.velocity):
+            return msg
+    return None
+
+
+def quaternion_angle(a, b):
+    """The angle [rad] between the orientations of two quaternions given as (w, x, y, z), which
+    need not be normalised."""
+    na = math.sqrt(sum(c * c for c in a))
+    nb = math.sqrt(sum(c * c for c in b))
+    dot = abs(sum(x * y for x, y in zip(a, b))) / (na * nb)
+    return 2.0 * math.acos(min(1.0, dot))
