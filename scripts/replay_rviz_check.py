@@ -47,6 +47,8 @@ from rosgraph_msgs.msg import Clock
 from rosgraph_msgs.msg import Log
 from tf2_msgs.msg import TFMessage
 
+from spherical_robots_testing import wait_until
+
 PKG = 'spherical_robots'
 NAME = 'replay_rviz_check'
 STARTUP_DEADLINE = 90.0     # [s] wall: rviz up and subscribed
@@ -79,14 +81,6 @@ class Settings:
 
 
 S = None  # Settings, made in main
-
-
-def wait_until(condition, what, timeout):
-    deadline = time.time() + timeout
-    while not condition():
-        if time.time() > deadline or rospy.is_shutdown():
-            raise AssertionError('timed out after %.0f s (wall) waiting for %s' % (timeout, what))
-        time.sleep(0.05)
 
 
 def rviz_config():

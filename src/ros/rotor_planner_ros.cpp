@@ -47,6 +47,7 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       corrections_(countParam(pnh, "corrections", 0, 0)),
       correction_tolerance_(positiveParam(pnh, "correction_tolerance", 1e-5)),
       correction_heading_tolerance_(positiveParam(pnh, "correction_heading_tolerance", 1e-3)),
+      correction_tilt_tolerance_(positiveParam(pnh, "correction_tilt_tolerance", 1e-4)),
       correction_steps_(countParam(pnh, "correction_steps", 1, 1)),
       odom_input_(nh.resolveName("odom"), positiveParam(pnh, "odom_timeout", 0.5)),
       updater_(nh, pnh) {
@@ -207,9 +208,14 @@ bool RotorPlannerRos::startExecution(std::uint32_t index, const rotor::FigureEig
                                                                 << peak * curve_rate_ << " > "
                                                                 << max_rotor_speed_ << " rad/s");
     }
-    // Short manoeuvres at high rates shorten the ramps to fit.
-    const rotor::CurveTiming timing(steps, rate, std::min(ramp_time_, 2.0 * M_PI * steps / rate));
-    execution_ = Execution{index, curve, timing, ros::Time::now(), goal, corrections_left};
+    const rotor::CurveTiming timing = curveTiming(steps, rate);
+    const double k = plan_k_;
+    const double scale = inertia_scale_;
+    execution_ = Execution{index,
+                           [k, scale, curve, timing](double t) {
+                             return rotor::planSetPointAt(k, scale, curve, timing, t);
+                           },
+                           timing.duration(), ros::Time::now(), goal, corrections_left, false};
     ROS_INFO_STREAM("rotor_planner: executing plan " << index << " (" << steps
                                                      << " steps, theta rate " << rate
                                                      << " rad/s, peak rotor speed " << peak * rate
@@ -223,10 +229,45 @@ bool RotorPlannerRos::startExecution(std::uint32_t index, const rotor::FigureEig
   return true;
 }
 
+rotor::CurveTiming RotorPlannerRos::curveTiming(int steps, double rate) const {
+  // Short manoeuvres at high rates shorten the ramps to fit.
+  return rotor::CurveTiming(steps, rate, std::min(ramp_time_, 2.0 * M_PI * steps / rate));
+}
+
+bool RotorPlannerRos::startPoleReturn(const rotor::PoleReturnArc& arc, int corrections_left) {
+  // Its rotor speeds scale with the arc's angle: under 0.1 rad/s per 0.01 rad at θ̇ = 1 rad/s,
+  // far below any rotor limit, so the curve rate is not lowered.
+  const rotor::CurveTiming timing = curveTiming(1, curve_rate_);
+  const double k = plan_k_;
+  const double scale = inertia_scale_;
+  const rotor::RestPose goal = execution_->goal;
+  execution_ = Execution{execution_->index,
+                         [k, scale, arc, timing](double t) {
+                           return rotor::arcSetPointAt(k, scale, arc, timing, t);
+                         },
+                         timing.duration(), ros::Time::now(), goal, corrections_left, true};
+  command_timer_.start();
+  return true;
+}
+
 bool RotorPlannerRos::startCorrection() {
   if (execution_->corrections_left <= 0 || !rest_pose_) return false;
-  const rotor::RestPose& goal = execution_->goal;
+  const rotor::RestPose goal = execution_->goal;
   const auto [miss, turn_miss] = missFrom(goal);
+  const int left = execution_->corrections_left - 1;
+  // First back to the south pole: every figure eight starts and ends there. Never two arcs in a
+  // row: an arc that left the contact off the pole was limited by the rotors' noise, which a
+  // second one would meet again, while the miss on the plane waits for a figure eight.
+  const rotor::PoleReturnArc arc(contact_angles_.x(), contact_angles_.y());
+  if (!execution_->pole_return && arc.angle() > correction_tilt_tolerance_) {
+    ROS_INFO_STREAM("rotor_planner: contact " << arc.angle() << " rad off the south pole, "
+                                              << miss << " m and " << turn_miss
+                                              << " rad off the goal: correction "
+                                              << corrections_ - left << " of " << corrections_
+                                              << ", back to the pole");
+    ++corrections_made_;
+    return startPoleReturn(arc, left);
+  }
   if (miss <= correction_tolerance_ && turn_miss <= correction_heading_tolerance_) return false;
   rotor::PlanRequest request;
   request.k = plan_k_;
@@ -237,7 +278,6 @@ bool RotorPlannerRos::startCorrection() {
   request.v_a = target.v_a;
   request.psi = target.psi;
   const rotor::PlanResult result = rotor::planRotorMotion(request);
-  const int left = execution_->corrections_left - 1;
   if (result.solutions.empty()) {
     std::ostringstream problem;
     problem << miss << " m, " << turn_miss << " rad off the goal, no correction: " << result.reason;
@@ -296,12 +336,11 @@ void RotorPlannerRos::onCommandTimer(const ros::TimerEvent&) {
   if (!execution_) return;
   const ros::Time now = ros::Time::now();
   const double t = (now - execution_->start).toSec();
-  const double end = execution_->timing.duration();
+  const double end = execution_->duration;
   if (t <= end + command_period_) {
     // One sample past the end: the timing is at rest there, so the last set-point is zero.
     const rotor::RotorSpeeds speeds = rotor::lagCompensatedSetPoint(
-        plan_k_, inertia_scale_, execution_->curve, execution_->timing, std::max(t, 0.0),
-        actuator_time_constant_, command_period_);
+        execution_->schedule, std::max(t, 0.0), actuator_time_constant_, command_period_);
     command_pub_.publish(conversions::velocityJointState(kRotors, {speeds.phi1, speeds.phi2}, now));
     return;
   }
@@ -322,8 +361,10 @@ void RotorPlannerRos::onOdometry(const nav_msgs::Odometry& msg) {
   const geometry_msgs::Point& centre = msg.pose.pose.position;
   const geometry_msgs::Quaternion& q = msg.pose.pose.orientation;
   try {
-    rest_pose_ = rotor::measuredRestPose(centre.x, centre.y, radius_,
-                                         Eigen::Quaterniond(q.w, q.x, q.y, q.z));
+    const Eigen::Quaterniond attitude(q.w, q.x, q.y, q.z);
+    const rotor::RestPose pose = rotor::measuredRestPose(centre.x, centre.y, radius_, attitude);
+    contact_angles_ = rotor::measuredContactAngles(attitude);
+    rest_pose_ = pose;
   } catch (const std::invalid_argument& error) {
     odom_input_.reject(error.what());  // logged; the last good rest pose stays
     updater_.update();

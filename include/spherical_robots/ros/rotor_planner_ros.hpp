@@ -46,11 +46,14 @@ namespace spherical_robots {
 /// the sphere is at rest (odom, nav_msgs/Odometry of the plant): its goal is the plan's target
 /// taken from there (rotor::planEnd; the zero state gives the target itself).
 /// Closing the loop over manoeuvres: with ~corrections N (0: open loop) > 0, after each
-/// execution and its ~settle [s] (1) the node measures the rest pose from odom and, while it is
-/// more than ~correction_tolerance [m] (1e-5) or ~correction_heading_tolerance [rad] (1e-3) off
-/// the goal and corrections remain, plans a ~correction_steps (1)-step manoeuvre from there to the
-/// goal (rotor::correctionTarget, the request's k and radius limit) and executes it the same way;
-/// one the planner cannot find ends the corrections with a warning.
+/// execution and its ~settle [s] (1) the node measures the rest from odom and, while corrections
+/// remain: if the contact is more than ~correction_tilt_tolerance [rad] (1e-4) off the sphere's
+/// south pole and the last correction was not such an arc, rolls it back along
+/// rotor::PoleReturnArc; else, if the sphere is more than
+/// ~correction_tolerance [m] (1e-5) or ~correction_heading_tolerance [rad] (1e-3) off the goal,
+/// plans a ~correction_steps (1)-step figure eight from there to the goal
+/// (rotor::correctionTarget, the request's k and radius limit) and executes it the same way;
+/// one the planner cannot find ends the corrections with a warning. Each counts as a correction.
 /// While executing and settling it appends odom to driven_path (nav_msgs/Path, every
 /// ~path_period [s] (0.05)); at the end it publishes the index on execution_done
 /// (std_msgs/UInt32, latched). A request while executing, before any plan, or with a bad index
@@ -72,6 +75,9 @@ class RotorPlannerRos {
   /// Starts tracing `curve` over `steps` steps toward `goal`; false (logged) if it cannot.
   bool startExecution(std::uint32_t index, const rotor::FigureEight& curve, int steps,
                       const rotor::RestPose& goal, int corrections_left);
+  /// Replaces the settled execution by the arc back to the pole, toward the same goal.
+  bool startPoleReturn(const rotor::PoleReturnArc& arc, int corrections_left);
+  rotor::CurveTiming curveTiming(int steps, double rate) const;
   /// After an execution has settled: plans and starts a correction if one is due and possible.
   bool startCorrection();
   /// How far the last good rest pose is from the goal: [m] on the plane, [rad] of heading.
@@ -104,6 +110,7 @@ class RotorPlannerRos {
   int corrections_;
   double correction_tolerance_;
   double correction_heading_tolerance_;
+  double correction_tilt_tolerance_;
   int correction_steps_;
   double plan_k_ = 0.0;
   int plan_steps_ = 0;
@@ -112,14 +119,16 @@ class RotorPlannerRos {
   std::vector<rotor::PlanTarget> plan_targets_;  ///< what each of plans_ reaches from zero
   struct Execution {
     std::uint32_t index;
-    rotor::FigureEight curve;
-    rotor::CurveTiming timing;
+    rotor::SetPointSchedule schedule;
+    double duration;  ///< [s] of the schedule, from start
     ros::Time start;
     rotor::RestPose goal;
     int corrections_left;
+    bool pole_return;  ///< the arc back to the pole, not a figure eight
   };
   std::optional<Execution> execution_;
   std::optional<rotor::RestPose> rest_pose_;  ///< from the latest valid odom
+  Eigen::Vector2d contact_angles_ = Eigen::Vector2d::Zero();  ///< (u_o, v_o) of that odom
   InputMonitor odom_input_;
   unsigned long executions_ = 0;
   unsigned long corrections_made_ = 0;
