@@ -18,6 +18,7 @@
 
 #include "spherical_robots/roller/friction_drive.hpp"
 #include "spherical_robots/roller/roller_geometry.hpp"
+#include "expect_invalid_argument.hpp"
 
 namespace {
 
@@ -48,18 +49,6 @@ void expectVectorNear(const Eigen::Vector3d& actual, const Eigen::Vector3d& expe
                       double tolerance, const std::string& what) {
   EXPECT_LE((actual - expected).norm(), tolerance)
       << what << ": (" << actual.transpose() << ") vs (" << expected.transpose() << ")";
-}
-
-/// `call` throws std::invalid_argument whose message contains `needle`.
-template <typename Call>
-void expectInvalid(Call call, const std::string& needle) {
-  try {
-    call();
-    ADD_FAILURE() << "no exception; expected one mentioning '" << needle << "'";
-  } catch (const std::invalid_argument& error) {
-    EXPECT_NE(std::string(error.what()).find(needle), std::string::npos)
-        << "'" << error.what() << "' does not mention '" << needle << "'";
-  }
 }
 
 /// Well-conditioned random drives: contacts at least ~6 degrees from (anti)parallel, |alpha| <= 80
@@ -646,37 +635,31 @@ TEST(PaperSection3Test, TrajectoriesOfOmegaShareTheXAxis) {
 
 TEST(FrictionDriveValidationTest, RejectsBadRadiusAndAngles) {
   for (const double r : {0.0, -1.0, kNaN, kInf, -0.0}) {
-    expectInvalid([&] { RollerGeometry(r, {0, 0}, {1, 0}, 0, 0); }, "radius");
+    EXPECT_INVALID_ARGUMENT(RollerGeometry(r, {0, 0}, {1, 0}, 0, 0), "radius");
   }
-  expectInvalid([] { RollerGeometry(1, {kNaN, 0}, {1, 0}, 0, 0); }, "azimuth of P1");
-  expectInvalid([] { RollerGeometry(1, {0, kInf}, {1, 0}, 0, 0); }, "elevation of P1");
-  expectInvalid([] { RollerGeometry(1, {0, 0}, {-kInf, 0}, 0, 0); }, "azimuth of P2");
-  expectInvalid([] { RollerGeometry(1, {0, 0}, {1, kNaN}, 0, 0); }, "elevation of P2");
-  expectInvalid([] { RollerGeometry(1, {0, 0}, {1, 0}, kNaN, 0); }, "alpha1");
-  expectInvalid([] { RollerGeometry(1, {0, 0}, {1, 0}, 0, kInf); }, "alpha2");
+  EXPECT_INVALID_ARGUMENT(RollerGeometry(1, {kNaN, 0}, {1, 0}, 0, 0), "azimuth of P1");
+  EXPECT_INVALID_ARGUMENT(RollerGeometry(1, {0, kInf}, {1, 0}, 0, 0), "elevation of P1");
+  EXPECT_INVALID_ARGUMENT(RollerGeometry(1, {0, 0}, {-kInf, 0}, 0, 0), "azimuth of P2");
+  EXPECT_INVALID_ARGUMENT(RollerGeometry(1, {0, 0}, {1, kNaN}, 0, 0), "elevation of P2");
+  EXPECT_INVALID_ARGUMENT(RollerGeometry(1, {0, 0}, {1, 0}, kNaN, 0), "alpha1");
+  EXPECT_INVALID_ARGUMENT(RollerGeometry(1, {0, 0}, {1, 0}, 0, kInf), "alpha2");
 }
 
 TEST(FrictionDriveValidationTest, RejectsParallelAndAntipodalContacts) {
-  expectInvalid(
-      [] {
-        RollerGeometry(1, {rad(30), rad(20)}, {rad(30), rad(20)}, 0, 0);
-      },
-      "parallel");
-  expectInvalid(
-      [] {
-        RollerGeometry(1, {rad(30), rad(20)}, {rad(210), rad(-20)}, 0, 0);
-      },
-      "antipodal");
-  expectInvalid([] { RollerGeometry(1, {0, rad(90)}, {rad(123), rad(90)}, 0, 0); }, "parallel");
+  EXPECT_INVALID_ARGUMENT(RollerGeometry(1, {rad(30), rad(20)}, {rad(30), rad(20)}, 0, 0),
+                          "parallel");
+  EXPECT_INVALID_ARGUMENT(RollerGeometry(1, {rad(30), rad(20)}, {rad(210), rad(-20)}, 0, 0),
+                          "antipodal");
+  EXPECT_INVALID_ARGUMENT(RollerGeometry(1, {0, rad(90)}, {rad(123), rad(90)}, 0, 0), "parallel");
   // A threshold, not == 0: 1e-12 rad apart is rejected, 1e-6 rad apart is accepted.
-  expectInvalid([] { RollerGeometry(5, {0.3, 0.1}, {0.3 + 1e-12, 0.1}, 0, 0); }, "parallel");
+  EXPECT_INVALID_ARGUMENT(RollerGeometry(5, {0.3, 0.1}, {0.3 + 1e-12, 0.1}, 0, 0), "parallel");
   EXPECT_NO_THROW(RollerGeometry(5, {0.3, 0.1}, {0.3 + 1e-6, 0.1}, 0, 0));
 }
 
 TEST(FrictionDriveValidationTest, RejectsRollerAxesNormalToThePlane) {
-  expectInvalid([] { RollerGeometry(1, {0, 0}, {1, 0}, rad(90), 0); }, "cos(alpha1)");
-  expectInvalid([] { RollerGeometry(1, {0, 0}, {1, 0}, 0, -M_PI / 2); }, "cos(alpha2)");
-  expectInvalid([] { RollerGeometry(1, {0, 0}, {1, 0}, M_PI / 2 + 1e-12, 0); }, "cos(alpha1)");
+  EXPECT_INVALID_ARGUMENT(RollerGeometry(1, {0, 0}, {1, 0}, rad(90), 0), "cos(alpha1)");
+  EXPECT_INVALID_ARGUMENT(RollerGeometry(1, {0, 0}, {1, 0}, 0, -M_PI / 2), "cos(alpha2)");
+  EXPECT_INVALID_ARGUMENT(RollerGeometry(1, {0, 0}, {1, 0}, M_PI / 2 + 1e-12, 0), "cos(alpha1)");
   EXPECT_NO_THROW(RollerGeometry(1, {0, 0}, {1, 0}, M_PI / 2 - 1e-6, 0));
   // Outside the paper's [-90, 90] deg: the same roller turned round.
   EXPECT_NO_THROW(RollerGeometry(1, {0, 0}, {1, 0}, rad(120), rad(-200)));
@@ -686,34 +669,34 @@ TEST(FrictionDriveValidationTest, RejectsAVerticalPlaneOfReachableOmega) {
   // P1 on the x axis, P2 at the pole, alpha = 0: omega stays in the xz plane, so the rollers can
   // only drive the sphere along +-y, and eq 18 divides by (X x Y)_z = 0.
   const FrictionDrive drive(RollerGeometry(1, {0, 0}, {0, rad(90)}, 0, 0));
-  expectInvalid([&] { drive.inverse(1.0, rad(45)); }, "eq 18");
-  expectInvalid([&] { drive.rho(rad(90)); }, "eq 18");
+  EXPECT_INVALID_ARGUMENT(drive.inverse(1.0, rad(45)), "eq 18");
+  EXPECT_INVALID_ARGUMENT(drive.rho(rad(90)), "eq 18");
   // The forward map still works where omega has a horizontal part ...
   const DriveState state = drive.forward({0.0, 1.0});
   EXPECT_NEAR(deg(state.motion.direction), 270.0, 1e-9);
   // ... and rejects an omega about the vertical: the sphere spins in place.
-  expectInvalid([&] { drive.forward({1.0, 0.0}); }, "no horizontal component");
+  EXPECT_INVALID_ARGUMENT(drive.forward({1.0, 0.0}), "no horizontal component");
 }
 
 TEST(FrictionDriveValidationTest, RejectsForwardResultsWithoutAHorizontalOmega) {
   const FrictionDrive drive = paperDrive(20);
-  expectInvalid([&] { drive.forward({0.0, 0.0}); }, "no horizontal component");
-  expectInvalid([] { sphereMotion(Eigen::Vector3d(1e-12, 0.0, 2.0), 1.0); },
-                "no horizontal component");
+  EXPECT_INVALID_ARGUMENT(drive.forward({0.0, 0.0}), "no horizontal component");
+  EXPECT_INVALID_ARGUMENT(sphereMotion(Eigen::Vector3d(1e-12, 0.0, 2.0), 1.0),
+                          "no horizontal component");
   EXPECT_NO_THROW(sphereMotion(Eigen::Vector3d(1e-8, 0.0, 2.0), 1.0));
   EXPECT_NO_THROW(sphereMotion(Eigen::Vector3d(1e-200, 0.0, 0.0), 1.0));  // small is not zero
-  expectInvalid([] { sphereMotion(Eigen::Vector3d(1.0, 0.0, 0.0), 0.0); }, "radius");
+  EXPECT_INVALID_ARGUMENT(sphereMotion(Eigen::Vector3d(1.0, 0.0, 0.0), 0.0), "radius");
 }
 
 TEST(FrictionDriveValidationTest, RejectsNonFiniteAndNegativeInput) {
   const FrictionDrive drive = paperDrive(10);
-  expectInvalid([&] { drive.inverse(-1.0, 0.0); }, "speed");
-  expectInvalid([&] { drive.inverse(kNaN, 0.0); }, "speed");
-  expectInvalid([&] { drive.inverse(1.0, kInf); }, "direction");
-  expectInvalid([&] { drive.forward({kNaN, 1.0}); }, "v1");
-  expectInvalid([&] { drive.forward({1.0, -kInf}); }, "v2");
-  expectInvalid([&] { drive.rollerSpeeds({0.0, kNaN, 0.0}); }, "omega_y");
-  expectInvalid([&] { drive.slipSpeeds({kInf, 0.0, 0.0}, {1.0, 1.0}); }, "omega_x");
+  EXPECT_INVALID_ARGUMENT(drive.inverse(-1.0, 0.0), "speed");
+  EXPECT_INVALID_ARGUMENT(drive.inverse(kNaN, 0.0), "speed");
+  EXPECT_INVALID_ARGUMENT(drive.inverse(1.0, kInf), "direction");
+  EXPECT_INVALID_ARGUMENT(drive.forward({kNaN, 1.0}), "v1");
+  EXPECT_INVALID_ARGUMENT(drive.forward({1.0, -kInf}), "v2");
+  EXPECT_INVALID_ARGUMENT(drive.rollerSpeeds({0.0, kNaN, 0.0}), "omega_y");
+  EXPECT_INVALID_ARGUMENT(drive.slipSpeeds({kInf, 0.0, 0.0}, {1.0, 1.0}), "omega_x");
   EXPECT_THROW(drive.slipVelocity(Eigen::Vector3d::Zero(), {}, 2), std::out_of_range);
   EXPECT_THROW(drive.omegaPerSpeed(2), std::out_of_range);
 }

@@ -17,6 +17,7 @@
 #include "spherical_robots/config/robot_description.hpp"
 #include "spherical_robots/norma/norma_dynamics.hpp"
 #include "spherical_robots/norma/norma_simulation.hpp"
+#include "expect_invalid_argument.hpp"
 
 namespace {
 
@@ -301,12 +302,7 @@ TEST(NormaDynamics, PlanarRatesFollowEqs6And12) {
 TEST(NormaDynamics, RejectsInvalidInput) {
   NormaParameters bad;
   bad.L = -0.1;
-  try {
-    NormaDynamics dynamics(bad);
-    FAIL();
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("L [m]"), std::string::npos) << e.what();
-  }
+  EXPECT_INVALID_ARGUMENT(NormaDynamics(bad), "L [m]");
   const NormaDynamics dynamics{NormaParameters()};
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(dynamics.massMatrix(Vector4(0, nan, 0, 0)), std::invalid_argument);
@@ -335,12 +331,7 @@ TEST(NormaDescription, ShippedUrdfIsSection5Robot) {
   EXPECT_THROW(config::normaParametersFromUrdf(flipped), std::invalid_argument);
   std::string no_slider = xml;
   no_slider.replace(no_slider.find("name=\"slider_joint\""), 19, "name=\"other_joint\"");
-  try {
-    config::normaParametersFromUrdf(no_slider);
-    FAIL();
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("slider_joint"), std::string::npos) << e.what();
-  }
+  EXPECT_INVALID_ARGUMENT(config::normaParametersFromUrdf(no_slider), "slider_joint");
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "spherical_robots/norma/norma_controller.hpp"
 #include "spherical_robots/norma/norma_plant.hpp"
 #include "spherical_robots/norma/norma_simulation.hpp"
+#include "expect_invalid_argument.hpp"
 
 namespace {
 
@@ -34,12 +35,8 @@ TEST(NormaDescription, AMalformedUrdfIsRejectedNamingThePart) {
   const std::size_t begin = urdf.find("<inertial>", link);
   const std::size_t end = urdf.find("</inertial>", begin) + std::string("</inertial>").size();
   urdf.erase(begin, end - begin);
-  try {
-    config::normaParametersFromUrdf(urdf);
-    FAIL() << "a URDF without the slider's mass was accepted";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("slider_link"), std::string::npos) << e.what();
-  }
+  EXPECT_INVALID_ARGUMENT(config::normaParametersFromUrdf(urdf), "slider_link")
+      << "a URDF without the slider's mass";
   EXPECT_THROW(config::normaParametersFromUrdf("<robot"), std::invalid_argument);
 }
 

@@ -11,13 +11,13 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
 
 #include "spherical_robots/freebot/src_joint.hpp"
+#include "expect_invalid_argument.hpp"
 
 namespace {
 
@@ -303,22 +303,14 @@ TEST(SrcJointTest, RollingAboutXMovesTheLinkTowardsMinusY) {
 }
 
 TEST(SrcJointTest, RejectsBadInput) {
-  const auto expectMessage = [](const std::function<void()>& call, const std::string& needle) {
-    try {
-      call();
-      ADD_FAILURE() << "no exception, expected '" << needle << "'";
-    } catch (const std::invalid_argument& error) {
-      EXPECT_NE(std::string(error.what()).find(needle), std::string::npos) << error.what();
-    }
-  };
-  expectMessage([] { SrcJoint(0.0, 0.03); }, "l_{i-1}");
-  expectMessage([] { SrcJoint(0.03, -1.0); }, "l_i");
-  expectMessage([] { SrcJoint(0.03, kNaN); }, "l_i");
+  EXPECT_INVALID_ARGUMENT(SrcJoint(0.0, 0.03), "l_{i-1}");
+  EXPECT_INVALID_ARGUMENT(SrcJoint(0.03, -1.0), "l_i");
+  EXPECT_INVALID_ARGUMENT(SrcJoint(0.03, kNaN), "l_i");
   const SrcJoint joint(0.03, 0.03);
-  expectMessage([&] { joint.roll(SrcJointState{}, {kNaN, 0.0}, 1.0); }, "omega_x");
+  EXPECT_INVALID_ARGUMENT(joint.roll(SrcJointState{}, {kNaN, 0.0}, 1.0), "omega_x");
   SrcJointState bad;
   bad.base = Eigen::Quaterniond(1.0, 1e-4, 0.0, 0.0);
-  expectMessage([&] { SrcJoint::requireValid(bad, "joint 2"); }, "joint 2 q_{i-1,2}");
+  EXPECT_INVALID_ARGUMENT(SrcJoint::requireValid(bad, "joint 2"), "joint 2 q_{i-1,2}");
   bad.base = Eigen::Quaterniond(1.0, 1e-5, 0.0, 0.0).normalized();
   EXPECT_NO_THROW(SrcJoint::requireValid(bad, "joint 2"));
 }

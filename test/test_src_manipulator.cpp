@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "spherical_robots/freebot/src_manipulator.hpp"
+#include "expect_invalid_argument.hpp"
 
 namespace {
 
@@ -166,20 +167,10 @@ TEST(SrcManipulatorTest, RejectsBadInput) {
   EXPECT_THROW(SrcManipulator({0.03}), std::invalid_argument);
   EXPECT_THROW(SrcManipulator({0.03, 0.0}), std::invalid_argument);
   const SrcManipulator chain({0.03, 0.03, 0.03});
-  try {
-    chain.forwardKinematics(std::vector<SrcJointState>(3));
-    ADD_FAILURE() << "no exception";
-  } catch (const std::invalid_argument& error) {
-    EXPECT_NE(std::string(error.what()).find("joint count"), std::string::npos) << error.what();
-  }
+  EXPECT_INVALID_ARGUMENT(chain.forwardKinematics(std::vector<SrcJointState>(3)), "joint count");
   std::vector<SrcJointState> states(2);
   states[1].link = Eigen::Quaterniond(0.9, 0.0, 0.0, 0.0);
-  try {
-    chain.forwardKinematics(states);
-    ADD_FAILURE() << "no exception";
-  } catch (const std::invalid_argument& error) {
-    EXPECT_NE(std::string(error.what()).find("joint 2 q_{i,1}"), std::string::npos) << error.what();
-  }
+  EXPECT_INVALID_ARGUMENT(chain.forwardKinematics(states), "joint 2 q_{i,1}");
   EXPECT_THROW(chain.straightRolls({Eigen::Vector2d::Zero()}), std::invalid_argument);
 }
 

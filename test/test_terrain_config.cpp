@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <functional>
 #include <stdexcept>
 #include <string>
 #include <unistd.h>
@@ -14,6 +13,7 @@
 #include "spherical_robots/config/robot_description.hpp"
 #include "spherical_robots/config/terrain_config.hpp"
 #include "spherical_robots/config/yaml_parameter_source.hpp"
+#include "expect_invalid_argument.hpp"
 
 #ifndef SPHERICAL_ROBOTS_SOURCE_DIR
 #error "SPHERICAL_ROBOTS_SOURCE_DIR must be defined (CMakeLists.txt)"
@@ -53,17 +53,6 @@ class TempYaml {
 TerrainConfig loadText(const std::string& text) {
   const TempYaml file(text);
   return loadTerrainConfig(YamlParameterSource(file.path()));
-}
-
-// Expects std::invalid_argument whose message contains every one of `needles`.
-void expectInvalidNaming(const std::function<void()>& f, std::initializer_list<std::string> needles) {
-  try {
-    f();
-    ADD_FAILURE() << "no exception";
-  } catch (const std::invalid_argument& e) {
-    const std::string what = e.what();
-    for (const auto& n : needles) EXPECT_NE(what.find(n), std::string::npos) << "'" << n << "' not in: " << what;
-  }
 }
 
 // The documented defaults: config/terrain.yaml ("the defaults"), k_e = 0.5 m for all.
@@ -140,8 +129,7 @@ class TerrainConfigBadValue : public ::testing::TestWithParam<BadValue> {};
 TEST_P(TerrainConfigBadValue, ThrowsNamingTheKeyAndTheFile) {
   const auto c = GetParam();
   const TempYaml file(c.yaml);
-  expectInvalidNaming([&] { loadTerrainConfig(YamlParameterSource(file.path())); },
-                      {c.key, file.path()});
+  EXPECT_INVALID_ARGUMENT(loadTerrainConfig(YamlParameterSource(file.path())), c.key, file.path());
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -162,9 +150,9 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(YamlParameterSource, RejectsAMissingOrUnparsableFileNamingIt) {
   const std::string missing = ::testing::TempDir() + "no_such_terrain_config.yaml";
-  expectInvalidNaming([&] { YamlParameterSource{missing}; }, {missing});
+  EXPECT_INVALID_ARGUMENT(YamlParameterSource{missing}, missing);
   const TempYaml broken("terrain: [unclosed\n  surface: {\n");
-  expectInvalidNaming([&] { YamlParameterSource{broken.path()}; }, {broken.path()});
+  EXPECT_INVALID_ARGUMENT(YamlParameterSource{broken.path()}, broken.path());
 }
 
 TEST(YamlParameterSource, ReadsNestedKeysAndReportsAbsentOnes) {
@@ -199,7 +187,7 @@ TEST(MakeSurface, BuildsTheNamedSurfaceAndRejectsUnknownNames) {
 
   for (const char* bad : {"bumpy", "Cosine"}) {
     spec.type = bad;
-    expectInvalidNaming([&] { makeSurface(spec); }, {bad});
+    EXPECT_INVALID_ARGUMENT(makeSurface(spec), bad);
   }
   spec.type = "";
   EXPECT_THROW(makeSurface(spec), std::invalid_argument);

@@ -8,7 +8,6 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <random>
 #include <stdexcept>
@@ -18,6 +17,7 @@
 #include "spherical_robots/freebot/src_joint.hpp"
 #include "spherical_robots/freebot/trolley_control.hpp"
 #include "spherical_robots/freebot/trolley_drive.hpp"
+#include "expect_invalid_argument.hpp"
 
 namespace {
 
@@ -75,19 +75,11 @@ TEST(TrolleyDriveTest, WheelAndTrolleySpeedsRoundTrip) {
 }
 
 TEST(TrolleyDriveTest, RejectsImpossibleGeometry) {
-  const auto expectMessage = [](const std::function<void()>& call, const std::string& needle) {
-    try {
-      call();
-      ADD_FAILURE() << "no exception, expected '" << needle << "'";
-    } catch (const std::invalid_argument& error) {
-      EXPECT_NE(std::string(error.what()).find(needle), std::string::npos) << error.what();
-    }
-  };
-  expectMessage([] { TrolleyDrive(0.005, 0.064, 0.032, 0.034); }, "wheel interval");
-  expectMessage([] { TrolleyDrive(0.005, 0.046, 0.035, 0.034); }, "inner radius");
-  expectMessage([] { TrolleyDrive(0.0, 0.046, 0.032, 0.034); }, "wheel radius");
-  expectMessage([] { TrolleyDrive(0.005, kNaN, 0.032, 0.034); }, "wheel interval");
-  expectMessage([] { kTableII.wheelSpeeds({kNaN, 0.0}); }, "u_f");
+  EXPECT_INVALID_ARGUMENT(TrolleyDrive(0.005, 0.064, 0.032, 0.034), "wheel interval");
+  EXPECT_INVALID_ARGUMENT(TrolleyDrive(0.005, 0.046, 0.035, 0.034), "inner radius");
+  EXPECT_INVALID_ARGUMENT(TrolleyDrive(0.0, 0.046, 0.032, 0.034), "wheel radius");
+  EXPECT_INVALID_ARGUMENT(TrolleyDrive(0.005, kNaN, 0.032, 0.034), "wheel interval");
+  EXPECT_INVALID_ARGUMENT(kTableII.wheelSpeeds({kNaN, 0.0}), "u_f");
 }
 
 TEST(TrolleyControlTest, JointVelocityAndTrolleyMotionRoundTripInEveryQuadrant) {
