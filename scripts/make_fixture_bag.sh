@@ -16,7 +16,7 @@
 # terrain: terrain_state, tracking_error, actuators/command, target, desired_path, trail,
 # terrain_marker (about 0.85 MB for 25 s); roller: the same plus roller_markers; norma:
 # tracking_error, target, desired_path, trail; rotor: planned_path, contact_curve, driven_path;
-# freebot: freebot_markers, ik_target. Left out: odom, actuators/state, diagnostics,
+# freebot: freebot_markers, ik_target, trail. Left out: odom, actuators/state, diagnostics,
 # cmd_vel, norma_state (1 kHz), freebot_state, joint_states (the tf they make is kept), which no
 # test reads.
 # Bag time = header stamp: the recorder stamps a message when it receives it, usually one 0.01 s
@@ -41,7 +41,7 @@ case $stack in
            keep="planned_path contact_curve driven_path"; default_duration=14 ;;
   freebot) ns=freebot; default=freebot_ABC_fixture.bag
            launch=(freebot_stack.launch speedup:=2)
-           keep="freebot_markers ik_target"; default_duration=20 ;;
+           keep="freebot_markers ik_target trail"; default_duration=20 ;;
   *) echo "unknown stack '$stack' (terrain | roller | norma | rotor | freebot)" >&2; exit 2 ;;
 esac
 out=$(realpath -m "${2:-$SR_ROOT/test/data/$default}")

@@ -15,6 +15,7 @@ namespace {
 
 const std::string kWorldFrame = "world";
 constexpr double kTrolleyArrow = 0.02;  // [m] length of a trolley's heading arrow
+constexpr std::size_t kMaxTrailPoints = 5000;
 
 visualization_msgs::Marker marker(const std::string& frame, const ros::Time& stamp,
                                   const std::string& ns, int id, int type) {
@@ -59,6 +60,7 @@ FreebotPlantRos::FreebotPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       step_(positiveParam(pnh, "step", 0.01)),
       timeline_(numberParam(pnh, "duration", 0.0)),
       publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
+      trail_(nh, "trail", kWorldFrame, positiveParam(pnh, "trail_period", 0.1), kMaxTrailPoints),
       state_(chain_.alignedState()),
       wheels_(chain_.moduleCount()),
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.1)),
@@ -93,8 +95,9 @@ void FreebotPlantRos::tick(const ros::Time& now) {
       actuator_input_.fresh(now) ? wheels_
                                  : std::vector<freebot::WheelSpeeds>(chain_.moduleCount());
   timeline_.tick(now, [&](double elapsed) { state_ = chain_.advance(state_, wheels, elapsed); });
-  state_pub_.publish(conversions::toFreebotStateMsg(
-      state_, chain_.manipulator().endEffector(state_.joints), kWorldFrame, now));
+  const freebot::LinkPose end = chain_.manipulator().endEffector(state_.joints);
+  state_pub_.publish(conversions::toFreebotStateMsg(state_, end, kWorldFrame, now));
+  if (trail_.due(now)) trail_.add(now, end.position, end.orientation);
   if (periodDue(last_publish_, now, publish_period_)) publishFrames(now);
   updater_.update();
 

@@ -43,7 +43,7 @@ NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       step_(positiveParam(pnh, "step", 0.001)),
       timeline_(numberParam(pnh, "duration", 0.0)),
       publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
-      trail_period_(positiveParam(pnh, "trail_period", 0.5)),
+      trail_(nh, "trail", kWorldFrame, positiveParam(pnh, "trail_period", 0.5), kMaxTrailPoints),
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.05)),
       updater_(nh, pnh) {
   state_.psi = numberParam(pnh, "initial_psi", 0.0);
@@ -51,8 +51,6 @@ NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   state_pub_ = nh.advertise<spherical_robots::NormaState>("norma_state", 10);
   odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
   joint_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
-  trail_pub_ = nh.advertise<nav_msgs::Path>("trail", 1);
-  trail_.header.frame_id = kWorldFrame;
 
   updater_.setHardwareID("Norma");
   updater_.add("norma plant", this, &NormaPlantRos::diagnose);
@@ -133,14 +131,7 @@ void NormaPlantRos::publishPose(const ros::Time& now) {
   joints.velocity = {qd(2), qd(0), qd(1), qd(3)};
   joint_pub_.publish(joints);
 
-  if (periodDue(last_trail_, now, trail_period_)) {
-    last_trail_ = now;
-    trail_.header.stamp = now;
-    trail_.poses.push_back(conversions::toPoseStamped({state_.x, state_.y, 0.0}, heading,
-                                                      kWorldFrame, now));
-    if (trail_.poses.size() > kMaxTrailPoints) trail_.poses.erase(trail_.poses.begin());
-    trail_pub_.publish(trail_);
-  }
+  if (trail_.due(now)) trail_.add(now, {state_.x, state_.y, 0.0}, heading);
 }
 
 void NormaPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

@@ -43,14 +43,15 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       max_rotor_speed_(numberParam(pnh, "max_rotor_speed", 0.0)),
       settle_(numberParam(pnh, "settle", 1.0)),
       actuator_time_constant_(numberParam(pnh, "actuator_time_constant", 0.0)),
-      path_period_(positiveParam(pnh, "path_period", 0.05)),
       corrections_(countParam(pnh, "corrections", 0, 0)),
       correction_tolerance_(positiveParam(pnh, "correction_tolerance", 1e-5)),
       correction_heading_tolerance_(positiveParam(pnh, "correction_heading_tolerance", 1e-3)),
       correction_tilt_tolerance_(positiveParam(pnh, "correction_tilt_tolerance", 1e-4)),
       correction_steps_(countParam(pnh, "correction_steps", 1, 1)),
       odom_input_(nh.resolveName("odom"), positiveParam(pnh, "odom_timeout", 0.5)),
-      updater_(nh, pnh) {
+      updater_(nh, pnh),
+      driven_(nh, "driven_path", frame_id_, positiveParam(pnh, "path_period", 0.05),
+              kMaxDrivenPoses, true) {
   if (samples_per_step_ < 1) {
     throw std::invalid_argument("parameter " + pnh.resolveName("samples_per_step") +
                                 " must be >= 1");
@@ -71,7 +72,6 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   }
   service_ = pnh.advertiseService("plan", &RotorPlannerRos::onPlan, this);
   command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", 10);
-  driven_pub_ = nh.advertise<nav_msgs::Path>("driven_path", 1, true);
   done_pub_ = nh.advertise<std_msgs::UInt32>("execution_done", 1, true);
   execute_sub_ = pnh.subscribe("execute", 1, &RotorPlannerRos::onExecute, this);
   odom_sub_ = nh.subscribe("odom", 10, &RotorPlannerRos::onOdometry, this);
@@ -186,8 +186,7 @@ void RotorPlannerRos::onExecute(const std_msgs::UInt32& msg) {
   if (!rest_pose_) {
     ROS_WARN_STREAM("rotor_planner: no odom yet: the goal is the target from the zero state");
   }
-  driven_.poses.clear();
-  last_driven_ = ros::Time();
+  driven_.clear();
   last_problem_.clear();
   if (startExecution(msg.data, plans_[msg.data], plan_steps_,
                  rotor::planEnd(rest_pose_.value_or(rotor::RestPose{}), plan_targets_[msg.data]),
@@ -353,7 +352,7 @@ void RotorPlannerRos::onCommandTimer(const ros::TimerEvent&) {
                                          << " rad of heading off the goal");
   execution_.reset();
   command_timer_.stop();
-  driven_pub_.publish(driven_);
+  driven_.publish();
   done_pub_.publish(done);
 }
 
@@ -373,15 +372,10 @@ void RotorPlannerRos::onOdometry(const nav_msgs::Odometry& msg) {
   odom_input_.accept(ros::Time::now());
   updater_.update();
   if (!execution_) return;
-  if (!periodDue(last_driven_, msg.header.stamp, path_period_)) return;
-  last_driven_ = msg.header.stamp;
-  geometry_msgs::PoseStamped pose;
-  pose.header = msg.header;
-  pose.pose = msg.pose.pose;
-  driven_.header = msg.header;
-  driven_.poses.push_back(pose);
-  if (driven_.poses.size() > kMaxDrivenPoses) driven_.poses.erase(driven_.poses.begin());
-  driven_pub_.publish(driven_);
+  if (driven_.due(msg.header.stamp)) {
+    driven_.add(msg.header.stamp, {centre.x, centre.y, centre.z},
+                Eigen::Quaterniond(q.w, q.x, q.y, q.z).normalized());
+  }
 }
 
 }  // namespace spherical_robots

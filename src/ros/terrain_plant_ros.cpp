@@ -28,7 +28,7 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       step_(positiveParam(pnh, "step", 0.01)),
       timeline_(numberParam(pnh, "duration", 0.0)),
       publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
-      trail_period_(positiveParam(pnh, "trail_period", 0.5)),
+      trail_(nh, "trail", kWorldFrame, positiveParam(pnh, "trail_period", 0.5), kMaxTrailPoints),
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.5)),
       updater_(nh, pnh) {
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
@@ -45,12 +45,10 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   actuator_sub_ = nh.subscribe("actuators/state", 10, &TerrainPlantRos::onActuatorState, this);
   odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
   state_pub_ = nh.advertise<spherical_robots::TerrainState>("terrain_state", 10);
-  trail_pub_ = nh.advertise<nav_msgs::Path>("trail", 1);
   marker_pub_ = nh.advertise<visualization_msgs::Marker>("terrain_marker", 1, true);
   marker_pub_.publish(conversions::surfaceMesh(*surface_, positiveParam(pnh, "marker_half_extent", 3.0),
                                                positiveParam(pnh, "marker_resolution", 0.1),
                                                kWorldFrame, ros::Time::now()));
-  trail_.header.frame_id = kWorldFrame;
 
   updater_.setHardwareID(terrain::toString(type_) + " sphere");
   updater_.add("terrain plant", this, &TerrainPlantRos::diagnose);
@@ -79,7 +77,10 @@ void TerrainPlantRos::tick(const ros::Time& now) {
   timeline_.tick(now, [&](double elapsed) { integrate(elapsed, rates); });
 
   if (periodDue(last_publish_, now, publish_period_)) publishState(now, rates);
-  if (periodDue(last_trail_, now, trail_period_)) extendTrail(now);
+  if (trail_.due(now)) {
+    const terrain::ContactGeometry geometry = kinematics_->geometry(state_);
+    trail_.add(now, geometry.contact_point, Eigen::Quaterniond(geometry.heading_frame));
+  }
   updater_.update();
 
   if (timeline_.complete(now)) {
@@ -110,16 +111,6 @@ void TerrainPlantRos::publishState(const ros::Time& now, const terrain::DriveRat
        conversions::toTransform(geometry.contact_point, heading, kWorldFrame, heading_frame_, now)});
   state_pub_.publish(conversions::toTerrainStateMsg(type_, kinematics_->model(), state_, geometry,
                                                     kinematics_->realisedRates(state_, rates), now));
-}
-
-void TerrainPlantRos::extendTrail(const ros::Time& now) {
-  last_trail_ = now;
-  const terrain::ContactGeometry geometry = kinematics_->geometry(state_);
-  trail_.header.stamp = now;
-  trail_.poses.push_back(conversions::toPoseStamped(
-      geometry.contact_point, Eigen::Quaterniond(geometry.heading_frame), kWorldFrame, now));
-  if (trail_.poses.size() > kMaxTrailPoints) trail_.poses.erase(trail_.poses.begin());
-  trail_pub_.publish(trail_);
 }
 
 void TerrainPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

@@ -16,6 +16,7 @@
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/plant_timeline.hpp"
 #include "spherical_robots/ros/sim_clock.hpp"
+#include "spherical_robots/ros/trail.hpp"
 
 namespace spherical_robots {
 
@@ -31,11 +32,12 @@ std::string freebotLinkFrame(const std::string& prefix, std::size_t i);
 /// Parameters (private, ~): frame_prefix (""); step [s] (0.01): the tick and the integration
 /// step; publish_rate [Hz] (50): tf and markers; state_timeout [s] (0.1): older measured wheel
 /// speeds count as zero; publish_clock (false), speedup (1), wait_for_subscribers (1),
-/// start_timeout [s] (10): as norma_dynamics; duration [s] (0 = forever).
+/// start_timeout [s] (10): as norma_dynamics; duration [s] (0 = forever); trail_period [s] (0.1):
+/// spacing of the end-effector trail's points.
 /// Subscribes actuators/state (velocities of module<i>_wheel_right/left [rad/s]). Publishes
 /// freebot_state (every tick), tf world -> <prefix>link0 (identity) and <prefix>link<i-1> ->
-/// <prefix>link<i> (B_i's centre and q_i), freebot_markers (spheres and trolleys) and
-/// /diagnostics.
+/// <prefix>link<i> (B_i's centre and q_i), freebot_markers (spheres and trolleys), trail (B_n's
+/// centre, nav_msgs/Path in world) and /diagnostics.
 class FreebotPlantRos {
  public:
   /// @throw std::invalid_argument on a bad parameter.
@@ -52,6 +54,7 @@ class FreebotPlantRos {
   double step_;
   PlantTimeline timeline_;
   double publish_period_;
+  Trail trail_;
   freebot::ChainState state_;
   std::vector<freebot::WheelSpeeds> wheels_;  ///< last measured [rad/s]
   ros::Time last_publish_;

@@ -14,6 +14,7 @@
 
 #include "spherical_robots/norma/norma_plant.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/trail.hpp"
 #include "spherical_robots/ros/plant_timeline.hpp"
 #include "spherical_robots/ros/sim_clock.hpp"
 
@@ -46,21 +47,18 @@ class NormaPlantRos {
   double step_;
   PlantTimeline timeline_;
   double publish_period_;
-  double trail_period_;
+  Trail trail_;
   norma::NormaState state_;
   double torque_ = 0.0;  ///< measured T [N m]
   double force_ = 0.0;   ///< measured F [N]
   ros::Time last_publish_;
-  ros::Time last_trail_;
   InputMonitor actuator_input_;
   ros::Subscriber actuator_sub_;
   ros::Publisher state_pub_;
   ros::Publisher odom_pub_;
   ros::Publisher joint_pub_;
-  ros::Publisher trail_pub_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   diagnostic_updater::Updater updater_;
-  nav_msgs::Path trail_;
   std::unique_ptr<SimClock> clock_;  ///< last: it ticks only once everything else exists
 };
 

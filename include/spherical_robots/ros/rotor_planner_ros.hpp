@@ -15,6 +15,7 @@
 
 #include "spherical_robots/PlanRotorMotion.h"
 #include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/trail.hpp"
 #include "spherical_robots/rotor/figure_eight.hpp"
 #include "spherical_robots/rotor/manoeuvre_correction.hpp"
 #include "spherical_robots/rotor/plan_execution.hpp"
@@ -106,7 +107,6 @@ class RotorPlannerRos {
   double max_rotor_speed_;
   double settle_;
   double actuator_time_constant_;
-  double path_period_;
   int corrections_;
   double correction_tolerance_;
   double correction_heading_tolerance_;
@@ -135,12 +135,10 @@ class RotorPlannerRos {
   std::string last_problem_;
   std::optional<std::pair<double, double>> last_miss_;  ///< [m], [rad] at the last end
   diagnostic_updater::Updater updater_;
-  nav_msgs::Path driven_;
-  ros::Time last_driven_;
   ros::Subscriber execute_sub_;
   ros::Subscriber odom_sub_;
   ros::Publisher command_pub_;
-  ros::Publisher driven_pub_;
+  Trail driven_;  ///< driven_path, latched
   ros::Publisher done_pub_;
   ros::Timer command_timer_;
 };

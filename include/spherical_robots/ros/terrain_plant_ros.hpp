@@ -13,6 +13,7 @@
 #include <string>
 
 #include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/trail.hpp"
 #include "spherical_robots/ros/plant_timeline.hpp"
 #include "spherical_robots/ros/sim_clock.hpp"
 #include "spherical_robots/terrain/surface.hpp"
@@ -48,7 +49,6 @@ class TerrainPlantRos {
   /// Advances state_ and orientation_ by elapsed [s] in steps no longer than step_.
   void integrate(double elapsed, const terrain::DriveRates& rates);
   void publishState(const ros::Time& now, const terrain::DriveRates& rates);
-  void extendTrail(const ros::Time& now);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   terrain::RobotType type_;
@@ -57,7 +57,7 @@ class TerrainPlantRos {
   double step_;
   PlantTimeline timeline_;
   double publish_period_;
-  double trail_period_;
+  Trail trail_;
 
   std::unique_ptr<terrain::Surface> surface_;
   std::unique_ptr<terrain::TerrainKinematics> kinematics_;
@@ -66,17 +66,14 @@ class TerrainPlantRos {
   terrain::DriveRates measured_;
 
   ros::Time last_publish_;
-  ros::Time last_trail_;
 
   InputMonitor actuator_input_;
   ros::Subscriber actuator_sub_;
   ros::Publisher odom_pub_;
   ros::Publisher state_pub_;
-  ros::Publisher trail_pub_;
   ros::Publisher marker_pub_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   diagnostic_updater::Updater updater_;
-  nav_msgs::Path trail_;
   std::unique_ptr<SimClock> clock_;  ///< last: it ticks only once everything else exists
 };
 
