@@ -86,7 +86,12 @@ TerrainStateRate TerrainKinematics::stateRate(const TerrainState& state,
 TerrainStateRate TerrainKinematics::stateRate(const TerrainState& state,
                                               const ContactGeometry& geometry,
                                               const DriveRates& commanded) const {
-  const DriveRates rates = realisedRates(state, commanded);
+  return realisedStateRate(state, geometry, realisedRates(state, commanded));
+}
+
+TerrainStateRate TerrainKinematics::realisedStateRate(const TerrainState& state,
+                                                      const ContactGeometry& geometry,
+                                                      const DriveRates& rates) const {
   // Eqs 33 and 48: the rolling velocity in F_L.
   const double forward = type_ == RobotType::RollingAndSteering
                              ? radius_ * rates.roll_rate * std::cos(state.phi)

@@ -71,7 +71,7 @@ void TerrainSimulation::step(double dt) {
   const auto closed_loop = [this](const OdeState& x, OdeState& dxdt, double t) {
     const TerrainState state = fromOde(x);
     const TerrainSample sample = evaluate(state, t);
-    dxdt = toOde(kinematics_.stateRate(state, sample.geometry, sample.rates));
+    dxdt = toOde(kinematics_.realisedStateRate(state, sample.geometry, sample.rates));
   };
   OdeState x = toOde(state_);
   Stepper().do_step(closed_loop, x, t_, dt);
