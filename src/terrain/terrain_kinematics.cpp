@@ -55,12 +55,9 @@ TerrainKinematics::TerrainKinematics(const Surface& surface, RobotType type, dou
 
 ContactGeometry TerrainKinematics::geometry(const TerrainState& state) const {
   requireFinite(state);
-  ContactGeometry geometry;
   const SurfacePoint point = surface_.evaluate(state.x, state.y);
-  geometry.gradient = point.gradient;
-  geometry.hessian = point.hessian;
-  geometry.heading_frame = headingFrame(geometry.gradient, state.psi);
-  geometry.contact_point = {state.x, state.y, point.height};
+  ContactGeometry geometry{Eigen::Vector3d(state.x, state.y, point.height), Eigen::Vector3d(),
+                           headingFrame(point.gradient, state.psi), point.gradient, point.hessian};
   geometry.centre = geometry.contact_point + radius_ * geometry.heading_frame.col(2);  // eq 51
   return geometry;
 }

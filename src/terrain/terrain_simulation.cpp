@@ -44,11 +44,8 @@ TerrainSimulation::TerrainSimulation(const TerrainKinematics& kinematics,
 }
 
 TerrainSample TerrainSimulation::evaluate(const TerrainState& state, double t) const {
-  TerrainSample sample;
-  sample.t = t;
-  sample.state = state;
-  sample.geometry = kinematics_.geometry(state);
-  sample.desired = desiredAt(t);
+  // Built in place: the geometry is not zeroed and then copied at each of the 160,000 stages.
+  TerrainSample sample{t, state, kinematics_.geometry(state), desiredAt(t), {}, {}};
   sample.error = trackingError(sample.geometry, sample.desired.position);
   sample.rates = kinematics_.realisedRates(
       state, controller_.command(sample.error, sample.desired.velocity));
