@@ -11,23 +11,32 @@
 namespace spherical_robots::terrain {
 namespace {
 
+// The messages are built out of line, so the checks, made at every RK stage, stay a few compares.
+[[noreturn]] void rejectState(const TerrainState& state) {
+  std::ostringstream message;
+  message << "terrain kinematics: state is not finite (x=" << state.x << ", y=" << state.y
+          << ", psi=" << state.psi << ", phi=" << state.phi << ")";
+  throw std::invalid_argument(message.str());
+}
+
+[[noreturn]] void rejectRates(const DriveRates& rates) {
+  std::ostringstream message;
+  message << "terrain kinematics: drive rates are not finite (roll=" << rates.roll_rate
+          << ", lateral=" << rates.lateral_rate << ", turn=" << rates.turn_rate << ")";
+  throw std::invalid_argument(message.str());
+}
+
 void requireFinite(const TerrainState& state) {
   if (!std::isfinite(state.x) || !std::isfinite(state.y) || !std::isfinite(state.psi) ||
       !std::isfinite(state.phi)) {
-    std::ostringstream message;
-    message << "terrain kinematics: state is not finite (x=" << state.x << ", y=" << state.y
-            << ", psi=" << state.psi << ", phi=" << state.phi << ")";
-    throw std::invalid_argument(message.str());
+    rejectState(state);
   }
 }
 
 void requireFinite(const DriveRates& rates) {
   if (!std::isfinite(rates.roll_rate) || !std::isfinite(rates.lateral_rate) ||
       !std::isfinite(rates.turn_rate)) {
-    std::ostringstream message;
-    message << "terrain kinematics: drive rates are not finite (roll=" << rates.roll_rate
-            << ", lateral=" << rates.lateral_rate << ", turn=" << rates.turn_rate << ")";
-    throw std::invalid_argument(message.str());
+    rejectRates(rates);
   }
 }
 
