@@ -9,18 +9,28 @@
 namespace spherical_robots::rotor {
 namespace {
 
+// The rejections are out of line so that the checks, made at every stage of the integrations,
+// stay a few compares.
+[[noreturn]] void rejectAboveEquator(const Eigen::Vector3d& point) {
+  std::ostringstream message;
+  message << "curve point (" << point.x() << ", " << point.y() << ", " << point.z()
+          << ") must lie below the sphere's equator (z < 0, |y| < 1): eq 30 divides by z";
+  throw std::invalid_argument(message.str());
+}
+
+[[noreturn]] void rejectRatio(double k) {
+  std::ostringstream message;
+  message << "inertia ratio k must be >= 0, got " << k;
+  throw std::invalid_argument(message.str());
+}
+
 /// √(1 − y²) = cos v_o of a checked point (eq 24).
 double checkedCosV(const Eigen::Vector3d& point) {
   requireFinite(point.x(), "curve point x [R]");
   requireFinite(point.y(), "curve point y [R]");
   requireFinite(point.z(), "curve point z [R]");
   const double w2 = 1.0 - point.y() * point.y();
-  if (!(point.z() < 0.0) || !(w2 > 0.0)) {
-    std::ostringstream message;
-    message << "curve point (" << point.x() << ", " << point.y() << ", " << point.z()
-            << ") must lie below the sphere's equator (z < 0, |y| < 1): eq 30 divides by z";
-    throw std::invalid_argument(message.str());
-  }
+  if (!(point.z() < 0.0) || !(w2 > 0.0)) rejectAboveEquator(point);
   return std::sqrt(w2);
 }
 
@@ -54,11 +64,7 @@ Eigen::Vector2d contactAngleRates(const CurvePoint& curve) {
 
 PlaneState realizableCurveRates(double k, const CurvePoint& curve, double psi) {
   requireFinite(k, "inertia ratio k");
-  if (k < 0.0) {
-    std::ostringstream message;
-    message << "inertia ratio k must be >= 0, got " << k;
-    throw std::invalid_argument(message.str());
-  }
+  if (k < 0.0) rejectRatio(k);
   requireFinite(psi, "psi [rad]");
   const double w = checkedCosV(curve.point);
   requireFiniteTangent(curve.tangent);

@@ -22,9 +22,13 @@ void requireRadius(double r, std::string_view what) {
   }
 }
 
-}  // namespace
-
-namespace {
+/// Out of line so that the check, made at every stage of the integrations, stays two compares.
+[[noreturn]] void rejectTheta(double theta, double lo, bool second) {
+  std::ostringstream message;
+  message << "theta [rad] must be in [" << lo << ", " << lo + M_PI << "] on leaf "
+          << (second ? 2 : 1) << ", got " << theta;
+  throw std::invalid_argument(message.str());
+}
 
 /// Eq 35 for a checked radius a with d = √(1 − a²) (= cos α; sin α = a).
 CurvePoint circlePoint(double a, double d, double phi, bool mirrored) {
@@ -79,12 +83,7 @@ CurvePoint FigureEight::at(double theta) const { return onLeaf(theta > M_PI, the
 CurvePoint FigureEight::onLeaf(bool second, double theta) const {
   requireFinite(theta, "theta [rad]");
   const double lo = second ? M_PI : 0.0;
-  if (theta < lo || theta > lo + M_PI) {
-    std::ostringstream message;
-    message << "theta [rad] must be in [" << lo << ", " << lo + M_PI << "] on leaf "
-            << (second ? 2 : 1) << ", got " << theta;
-    throw std::invalid_argument(message.str());
-  }
+  if (theta < lo || theta > lo + M_PI) rejectTheta(theta, lo, second);
   const CurvePoint leaf = second ? circlePoint(b_, d_b_, 2.0 * theta - 2.0 * M_PI, true)
                                  : circlePoint(a_, d_a_, 2.0 * theta, false);
   const auto turn = [this](const Eigen::Vector3d& v) {  // R_z(γ) of eq 31

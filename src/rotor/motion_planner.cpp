@@ -177,15 +177,20 @@ std::optional<Eigen::Vector2d> modelRoot(const Equations& equations, const LeafT
   return std::nullopt;
 }
 
+/// A root of the equations and the step phase of its integrated leaves.
+struct Root {
+  Eigen::Vector2d radii;  // (a, b) [R]
+  StepPhase phase;        // stepPhase(k, a, b), kept from the iteration that found the root
+};
+
 /// Quasi-Newton iteration on integrated leaves from the interpolant's root, starting from the
 /// interpolant's Jacobian and updating it by Broyden's rule (one pair of leaf integrations per
 /// iteration) or, if `differences`, recomputing it by forward differences of integrated leaves
 /// (two pairs). Converged when the step is below kConvergedStep (integration noise, up to ~1e-8
 /// near the equator, keeps the residual from reaching zero) and the residual below
 /// kConvergedResidual.
-std::optional<Eigen::Vector2d> polish(double k, const Equations& equations,
-                                      const LeafTable& table, Eigen::Vector2d x,
-                                      double max_radius, bool differences) {
+std::optional<Root> polish(double k, const Equations& equations, const LeafTable& table,
+                           Eigen::Vector2d x, double max_radius, bool differences) {
   const auto model = [&table](double r) { return table.interpolate(r); };
   const auto integrated = [k](double r) { return leafPhase(k, r); };
   LeafPhase at_a = model(x.x()), at_b = model(x.y());
@@ -195,7 +200,7 @@ std::optional<Eigen::Vector2d> polish(double k, const Equations& equations,
   at_b = integrated(x.y());
   Eigen::VectorXd f = equations.residual(composeLeaves(at_a, at_b));
   for (int iteration = 0; iteration < kNewtonIterations; ++iteration) {
-    if (f.cwiseAbs().maxCoeff() < kResidualTolerance) return x;
+    if (f.cwiseAbs().maxCoeff() < kResidualTolerance) return Root{x, composeLeaves(at_a, at_b)};
     if (differences && iteration > 0) {
       j = jacobian(equations, integrated, x, at_a, at_b, f, max_radius);
     }
@@ -208,7 +213,9 @@ std::optional<Eigen::Vector2d> polish(double k, const Equations& equations,
     at_b = integrated(x.y());
     const Eigen::VectorXd next = equations.residual(composeLeaves(at_a, at_b));
     if (delta.cwiseAbs().maxCoeff() < kConvergedStep) {
-      if (next.cwiseAbs().maxCoeff() < kConvergedResidual) return x;
+      if (next.cwiseAbs().maxCoeff() < kConvergedResidual) {
+        return Root{x, composeLeaves(at_a, at_b)};
+      }
       return std::nullopt;
     }
     if (!differences) j += (next - f - j * delta) * delta.transpose() / delta.squaredNorm();
@@ -223,12 +230,12 @@ bool changesSign(double a, double b, double c, double d) {
 }
 
 /// Every root of the equations in the table's cells, refined and deduplicated.
-std::vector<Eigen::Vector2d> roots(double k, const Equations& equations, const LeafTable& table,
-                                   const PhaseGrid& grid, double max_radius) {
+std::vector<Root> roots(double k, const Equations& equations, const LeafTable& table,
+                        const PhaseGrid& grid, double max_radius) {
   const std::size_t n = grid.n;
   const auto f = [&](std::size_t i, std::size_t j) { return grid.eta[i * n + j] - equations.eta; };
   const auto g = [&](std::size_t i, std::size_t j) { return grid.h[i * n + j] - equations.h; };
-  std::vector<Eigen::Vector2d> found;
+  std::vector<Root> found;
   std::vector<Eigen::Vector2d> guesses;
   for (std::size_t i = 0; i + 1 < n; ++i) {
     for (std::size_t j = 0; j + 1 < n; ++j) {
@@ -259,11 +266,11 @@ std::vector<Eigen::Vector2d> roots(double k, const Equations& equations, const L
         continue;
       }
       guesses.push_back(*guess);
-      std::optional<Eigen::Vector2d> root = polish(k, equations, table, *guess, max_radius, false);
+      std::optional<Root> root = polish(k, equations, table, *guess, max_radius, false);
       if (!root) root = polish(k, equations, table, *guess, max_radius, true);
       if (!root) continue;
       if (std::none_of(found.begin(), found.end(),
-                       [&](const Eigen::Vector2d& x) { return near(x, *root); })) {
+                       [&](const Root& x) { return near(x.radii, root->radii); })) {
         found.push_back(*root);
       }
     }
@@ -337,8 +344,9 @@ std::vector<RotorPlan> planHeading(const PlanRequest& request, double psi, const
 
   std::vector<RotorPlan> plans;
   int rejected = 0;
-  for (const Eigen::Vector2d& root : roots(request.k, equations, table, grid, request.max_radius)) {
-    const StepPhase phase = stepPhase(request.k, root.x(), root.y());
+  for (const Root& found : roots(request.k, equations, table, grid, request.max_radius)) {
+    const Eigen::Vector2d& root = found.radii;
+    const StepPhase& phase = found.phase;
     // Total shift for γ = 0: step j's shift turned by −jη (eqs 28-29); γ turns it by +γ.
     Eigen::Vector2d total = Eigen::Vector2d::Zero();
     for (int j = 0; j < n; ++j) total += Eigen::Rotation2Dd(-j * phase.eta) * phase.shift;

@@ -1,6 +1,7 @@
 #include "spherical_robots/terrain/pure_pursuit.hpp"
 #include "spherical_robots/core/validation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -40,8 +41,11 @@ TrackingError trackingError(const ContactGeometry& geometry, const Eigen::Vector
   result.norm = result.error.norm();
   const double along_heading = result.error.dot(geometry.heading_frame.col(0));
   const double along_left = result.error.dot(geometry.heading_frame.col(1));
-  // Along n the direction in the plane is round-off, not information.
-  if (std::hypot(along_heading, along_left) > 1e-12 * result.norm) {
+  // Along n the direction in the plane is round-off, not information. hypot(a, b) is never below
+  // max(|a|, |b|), so the larger component alone settles the usual case without the slow hypot.
+  const double round_off = 1e-12 * result.norm;
+  if (std::max(std::abs(along_heading), std::abs(along_left)) > round_off ||
+      std::hypot(along_heading, along_left) > round_off) {
     result.zeta = std::atan2(along_left, along_heading);
   }
   return result;

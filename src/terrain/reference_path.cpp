@@ -24,15 +24,14 @@ CirclePath::CirclePath(double radius, double angular_rate)
 }
 
 // Eq 60 corrected: the printed y = 2 cos(0.05 t) would make the path a line.
-Eigen::Vector2d CirclePath::position(double t) const {
+PathPoint CirclePath::at(double t) const {
   requireFiniteTime(t);
-  return radius_ * Eigen::Vector2d(std::cos(angular_rate_ * t), std::sin(angular_rate_ * t));
-}
-
-Eigen::Vector2d CirclePath::velocity(double t) const {
-  requireFiniteTime(t);
-  return radius_ * angular_rate_ *
-         Eigen::Vector2d(-std::sin(angular_rate_ * t), std::cos(angular_rate_ * t));
+  const double cos_wt = std::cos(angular_rate_ * t);
+  const double sin_wt = std::sin(angular_rate_ * t);
+  PathPoint point;
+  point.position = radius_ * Eigen::Vector2d(cos_wt, sin_wt);
+  point.velocity = radius_ * angular_rate_ * Eigen::Vector2d(-sin_wt, cos_wt);
+  return point;
 }
 
 double CirclePath::period() const { return 2.0 * M_PI / std::abs(angular_rate_); }
@@ -73,13 +72,12 @@ DiamondEdge diamondEdge(double half_diagonal, double speed, double t) {
 
 }  // namespace
 
-Eigen::Vector2d DiamondPath::position(double t) const {
+PathPoint DiamondPath::at(double t) const {
   const DiamondEdge edge = diamondEdge(half_diagonal_, speed_, t);
-  return edge.start + edge.travelled * edge.direction;
-}
-
-Eigen::Vector2d DiamondPath::velocity(double t) const {
-  return speed_ * diamondEdge(half_diagonal_, speed_, t).direction;
+  PathPoint point;
+  point.position = edge.start + edge.travelled * edge.direction;
+  point.velocity = speed_ * edge.direction;
+  return point;
 }
 
 double DiamondPath::period() const { return 4.0 * std::sqrt(2.0) * half_diagonal_ / speed_; }
@@ -91,8 +89,9 @@ std::string DiamondPath::describe() const {
 }
 
 DesiredPoint liftOntoSurface(const ReferencePath& path, const Surface& surface, double t) {
-  const Eigen::Vector2d xy = path.position(t);
-  const Eigen::Vector2d xy_rate = path.velocity(t);
+  const PathPoint planar = path.at(t);
+  const Eigen::Vector2d& xy = planar.position;
+  const Eigen::Vector2d& xy_rate = planar.velocity;
   const SurfacePoint ground = surface.evaluate(xy.x(), xy.y());
   DesiredPoint desired;
   desired.position = {xy.x(), xy.y(), ground.height};

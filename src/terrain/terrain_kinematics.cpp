@@ -11,23 +11,32 @@
 namespace spherical_robots::terrain {
 namespace {
 
+// The messages are built out of line, so the checks, made at every RK stage, stay a few compares.
+[[noreturn]] void rejectState(const TerrainState& state) {
+  std::ostringstream message;
+  message << "terrain kinematics: state is not finite (x=" << state.x << ", y=" << state.y
+          << ", psi=" << state.psi << ", phi=" << state.phi << ")";
+  throw std::invalid_argument(message.str());
+}
+
+[[noreturn]] void rejectRates(const DriveRates& rates) {
+  std::ostringstream message;
+  message << "terrain kinematics: drive rates are not finite (roll=" << rates.roll_rate
+          << ", lateral=" << rates.lateral_rate << ", turn=" << rates.turn_rate << ")";
+  throw std::invalid_argument(message.str());
+}
+
 void requireFinite(const TerrainState& state) {
   if (!std::isfinite(state.x) || !std::isfinite(state.y) || !std::isfinite(state.psi) ||
       !std::isfinite(state.phi)) {
-    std::ostringstream message;
-    message << "terrain kinematics: state is not finite (x=" << state.x << ", y=" << state.y
-            << ", psi=" << state.psi << ", phi=" << state.phi << ")";
-    throw std::invalid_argument(message.str());
+    rejectState(state);
   }
 }
 
 void requireFinite(const DriveRates& rates) {
   if (!std::isfinite(rates.roll_rate) || !std::isfinite(rates.lateral_rate) ||
       !std::isfinite(rates.turn_rate)) {
-    std::ostringstream message;
-    message << "terrain kinematics: drive rates are not finite (roll=" << rates.roll_rate
-            << ", lateral=" << rates.lateral_rate << ", turn=" << rates.turn_rate << ")";
-    throw std::invalid_argument(message.str());
+    rejectRates(rates);
   }
 }
 
@@ -55,12 +64,9 @@ TerrainKinematics::TerrainKinematics(const Surface& surface, RobotType type, dou
 
 ContactGeometry TerrainKinematics::geometry(const TerrainState& state) const {
   requireFinite(state);
-  ContactGeometry geometry;
   const SurfacePoint point = surface_.evaluate(state.x, state.y);
-  geometry.gradient = point.gradient;
-  geometry.hessian = point.hessian;
-  geometry.heading_frame = headingFrame(geometry.gradient, state.psi);
-  geometry.contact_point = {state.x, state.y, point.height};
+  ContactGeometry geometry{Eigen::Vector3d(state.x, state.y, point.height), Eigen::Vector3d(),
+                           headingFrame(point.gradient, state.psi), point.gradient, point.hessian};
   geometry.centre = geometry.contact_point + radius_ * geometry.heading_frame.col(2);  // eq 51
   return geometry;
 }
@@ -86,7 +92,12 @@ TerrainStateRate TerrainKinematics::stateRate(const TerrainState& state,
 TerrainStateRate TerrainKinematics::stateRate(const TerrainState& state,
                                               const ContactGeometry& geometry,
                                               const DriveRates& commanded) const {
-  const DriveRates rates = realisedRates(state, commanded);
+  return realisedStateRate(state, geometry, realisedRates(state, commanded));
+}
+
+TerrainStateRate TerrainKinematics::realisedStateRate(const TerrainState& state,
+                                                      const ContactGeometry& geometry,
+                                                      const DriveRates& rates) const {
   // Eqs 33 and 48: the rolling velocity in F_L.
   const double forward = type_ == RobotType::RollingAndSteering
                              ? radius_ * rates.roll_rate * std::cos(state.phi)

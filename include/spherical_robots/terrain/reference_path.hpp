@@ -10,12 +10,21 @@
 
 namespace spherical_robots::terrain {
 
+/// Where a planar reference is at one time, and how fast it moves there.
+struct PathPoint {
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();  ///< (x_d, y_d) [m]
+  Eigen::Vector2d velocity = Eigen::Vector2d::Zero();  ///< (x_d', y_d') [m/s]
+};
+
 /// A planar reference (x_d(t), y_d(t)) [m] and its velocity [m/s].
 class ReferencePath {
  public:
   virtual ~ReferencePath() = default;
-  virtual Eigen::Vector2d position(double t) const = 0;
-  virtual Eigen::Vector2d velocity(double t) const = 0;
+  /// Position and velocity together: they share their trigonometry, and the closed loop needs
+  /// both at every new RK stage time. @throw std::invalid_argument on a non-finite t.
+  virtual PathPoint at(double t) const = 0;
+  Eigen::Vector2d position(double t) const { return at(t).position; }
+  Eigen::Vector2d velocity(double t) const { return at(t).velocity; }
   /// Time [s] after which the path repeats.
   virtual double period() const = 0;
   virtual std::string describe() const = 0;
@@ -26,8 +35,7 @@ class CirclePath final : public ReferencePath {
  public:
   /// @param radius r [m] > 0, @param angular_rate w [rad/s] != 0. @throw std::invalid_argument
   CirclePath(double radius, double angular_rate);
-  Eigen::Vector2d position(double t) const override;
-  Eigen::Vector2d velocity(double t) const override;
+  PathPoint at(double t) const override;
   double period() const override;
   std::string describe() const override;
 
@@ -42,8 +50,7 @@ class DiamondPath final : public ReferencePath {
  public:
   /// @param half_diagonal d [m] > 0, @param speed [m/s] > 0. @throw std::invalid_argument
   DiamondPath(double half_diagonal, double speed);
-  Eigen::Vector2d position(double t) const override;
-  Eigen::Vector2d velocity(double t) const override;
+  PathPoint at(double t) const override;
   double period() const override;
   std::string describe() const override;
 

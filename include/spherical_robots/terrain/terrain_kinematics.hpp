@@ -80,6 +80,11 @@ class TerrainKinematics {
   TerrainStateRate stateRate(const TerrainState& state, const ContactGeometry& geometry,
                              const DriveRates& commanded) const;
 
+  /// Same, for rates that realisedRates() already returned for this state (realising them again
+  /// would change nothing).
+  TerrainStateRate realisedStateRate(const TerrainState& state, const ContactGeometry& geometry,
+                                     const DriveRates& realised) const;
+
   /// The shell's angular velocity in the world frame [rad/s]:
   /// theta_dot l + phi_dot h + psi_dot n (eq 46 for RS: alpha_dot (cos phi l + sin phi n) + ...).
   Eigen::Vector3d shellAngularVelocity(const TerrainState& state, const DriveRates& commanded) const;

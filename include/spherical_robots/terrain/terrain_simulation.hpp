@@ -44,6 +44,9 @@ class TerrainSimulation {
   /// p_d(t), remembered for the two latest times: RK4 asks for t + dt/2 twice and for t + dt
   /// again at the next step's start.
   const DesiredPoint& desiredAt(double t) const;
+  /// The controller's command for this error, as the robot at this state realises it.
+  DriveRates realisedCommand(const TerrainState& state, const TrackingError& error,
+                             const DesiredPoint& desired) const;
 
   const TerrainKinematics& kinematics_;
   const PurePursuitController& controller_;
