@@ -23,18 +23,11 @@ namespace spherical_robots::rotor {
 
 /// The sphere at rest with its contact at the south pole: the contact point (u_a, v_a) [R] on
 /// the plane and the contact angle ψ [rad]; the attitude is R_zᵀ(ψ).
-struct RestPose {
-  double u_a = 0.0;
-  double v_a = 0.0;
-  double psi = 0.0;
-};
+using RestPose = PlaneState;
 
-/// What a plan is asked to do from the zero state (PlanRequest's u_a, v_a [R], ψ [rad]).
-struct PlanTarget {
-  double u_a = 0.0;
-  double v_a = 0.0;
-  double psi = 0.0;
-};
+/// What a plan is asked to do (PlanRequest's u_a, v_a [R], ψ [rad]): the rest it reaches from
+/// the zero state.
+using PlanTarget = PlaneState;
 
 /// Where a plan for `target`, traced from `start`, ends. @throw std::invalid_argument on a
 /// non-finite input.
