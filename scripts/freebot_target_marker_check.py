@@ -1,0 +1,132 @@
+#!/usr/bin/env python3
+"""rostest of freebot_target_marker.py (test/freebot_target_marker.test): its interactive marker
+server spoken to as rviz speaks to it, on the real topics of Debian's interactive_markers
+(<server>/update_full, <server>/update, <server>/feedback):
+  1. the marker 'target' is offered in world at ~initial (Table II's target A);
+  2. a drag (POSE_UPDATE feedback) sends no goal; the release (MOUSE_UP) sends exactly the
+     released pose as a goal in world;
+  3. a goal from elsewhere (ik_target) moves the marker; a position-only one (zero quaternion)
+     keeps the marker's orientation.
+"""
+import threading
+import time
+import unittest
+
+import rospy
+import rostest
+from geometry_msgs.msg import Pose, PoseStamped
+from visualization_msgs.msg import InteractiveMarkerFeedback, InteractiveMarkerInit, \
+    InteractiveMarkerUpdate
+
+from spherical_robots_testing import wait_until
+
+PKG = 'spherical_robots'
+NAME = 'freebot_target_marker_check'
+TABLE_II_A = [0.0036, 0.1636, 0.0924, 0.8610, 0.4687, 0.1356, 0.1437]  # x y z, qw qx qy qz
+DEADLINE = 30.0  # [s] wall
+
+
+def pose_list(pose):
+    p, o = pose.position, pose.orientation
+    return [p.x, p.y, p.z, o.w, o.x, o.y, o.z]
+
+
+class FreebotTargetMarkerCheck(unittest.TestCase):
+
+    @classmethod
+    def setUpClass(cls):
+        cls.lock = threading.Lock()
+        cls.init = None
+        cls.marker_poses = []  # poses of 'target' from update messages
+        cls.goals = []
+        server = rospy.get_param('~server', 'freebot_target')
+        rospy.Subscriber(server + '/update_full', InteractiveMarkerInit, cls.on_init)
+        rospy.Subscriber(server + '/update', InteractiveMarkerUpdate, cls.on_update)
+        rospy.Subscriber('goal', PoseStamped, cls.on_goal)
+        cls.feedback = rospy.Publisher(server + '/feedback', InteractiveMarkerFeedback,
+                                       queue_size=10)
+        cls.ik_target = rospy.Publisher('ik_target', PoseStamped, queue_size=10)
+
+    @classmethod
+    def on_init(cls, msg):
+        with cls.lock:
+            cls.init = msg
+
+    @classmethod
+    def on_update(cls, msg):
+        with cls.lock:
+            cls.marker_poses += [p.pose for p in msg.poses if p.name == 'target']
+            cls.marker_poses += [m.pose for m in msg.markers if m.name == 'target']
+
+    @classmethod
+    def on_goal(cls, msg):
+        with cls.lock:
+            cls.goals.append(msg)
+
+    def send_feedback(self, event, pose):
+        feedback = InteractiveMarkerFeedback(client_id='/rviz/InteractiveMarkers',
+                                             marker_name='target', event_type=event, pose=pose)
+        feedback.header.frame_id = 'world'
+        feedback.header.stamp = rospy.Time.now()
+        self.feedback.publish(feedback)
+
+    def test_01_offers_the_target_at_table_ii_a(self):
+        wait_until(lambda: self.init is not None, 'update_full', DEADLINE)
+        markers = {m.name: m for m in self.init.markers}
+        self.assertIn('target', markers)
+        target = markers['target']
+        self.assertEqual(target.header.frame_id, 'world')
+        for got, want in zip(pose_list(target.pose), TABLE_II_A):
+            self.assertAlmostEqual(got, want, places=9)
+        self.assertGreaterEqual(len(target.controls), 7)  # the body and six rings/arrows
+
+    def test_02_release_sends_the_pose_as_a_goal(self):
+        wait_until(lambda: self.feedback.get_num_connections() > 0, 'the server on feedback',
+                   DEADLINE)
+        dragged = Pose()
+        dragged.position.x, dragged.position.y, dragged.position.z = 0.05, 0.12, 0.15
+        dragged.orientation.w = 1.0
+        self.send_feedback(InteractiveMarkerFeedback.POSE_UPDATE, dragged)
+        time.sleep(1.0)
+        with self.lock:
+            self.assertEqual(self.goals, [], 'a goal while dragging')
+        released = Pose()
+        released.position.x, released.position.y, released.position.z = 0.06, 0.11, 0.14
+        released.orientation.w, released.orientation.z = 0.8, 0.6
+        self.send_feedback(InteractiveMarkerFeedback.MOUSE_UP, released)
+        wait_until(lambda: len(self.goals) > 0, 'a goal on release', DEADLINE)
+        time.sleep(0.5)
+        with self.lock:
+            self.assertEqual(len(self.goals), 1)
+            goal = self.goals[0]
+        self.assertEqual(goal.header.frame_id, 'world')
+        self.assertEqual(pose_list(goal.pose), pose_list(released))
+
+    def test_03_goals_from_elsewhere_move_the_marker(self):
+        wait_until(lambda: self.ik_target.get_num_connections() > 0,
+                   'the marker node on ik_target', DEADLINE)
+        full = PoseStamped()
+        full.header.frame_id = 'world'
+        full.pose.position.x, full.pose.position.y, full.pose.position.z = 0.1151, 0.1489, 0.0291
+        full.pose.orientation.w, full.pose.orientation.x = 0.6, 0.8
+        self.ik_target.publish(full)
+        wait_until(lambda: any(abs(p.position.x - 0.1151) < 1e-9 for p in self.marker_poses),
+                   'the marker at the full-pose goal', DEADLINE)
+        with self.lock:
+            moved = [p for p in self.marker_poses if abs(p.position.x - 0.1151) < 1e-9][-1]
+        self.assertEqual(pose_list(moved), pose_list(full.pose))
+        position_only = PoseStamped()
+        position_only.header.frame_id = 'world'
+        position_only.pose.position.x, position_only.pose.position.z = 0.2, 0.05
+        self.ik_target.publish(position_only)
+        wait_until(lambda: any(abs(p.position.x - 0.2) < 1e-9 for p in self.marker_poses),
+                   'the marker at the position-only goal', DEADLINE)
+        with self.lock:
+            kept = [p for p in self.marker_poses if abs(p.position.x - 0.2) < 1e-9][-1]
+        self.assertEqual(pose_list(kept)[:3], [0.2, 0.0, 0.05])
+        self.assertEqual(pose_list(kept)[3:], [0.6, 0.8, 0.0, 0.0])  # the marker's, kept
+
+
+if __name__ == '__main__':
+    rospy.init_node(NAME)
+    rostest.rosrun(PKG, NAME, FreebotTargetMarkerCheck)
