@@ -13,6 +13,7 @@
 #   rotor_rviz.png                rotor stack, default two-step manoeuvre, at t = 15 s (ended)
 #   freebot_rviz.png              FreeBOT stack, default targets, at t = 26 s (at target C)
 #   norma_run_paper.png, rotor_run.png, freebot_run.png: the plots of those three bags
+#   rotor_run_corrected.png       rotor stack with corrections:=3 (plot only, no screenshot)
 # Needs the built package. Each run gets its own ROS master on a free port.
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/env.sh"
@@ -25,7 +26,7 @@ trap 'rm -rf "$work"' EXIT
 wanted=("${@:2}")
 
 # record STACK NAME AT DURATION LAUNCH_ARGS...: records a run and screenshots it at bag time AT
-# (if NAME is wanted: no names given, or NAME among them).
+# (AT "-": no screenshot), if NAME is wanted: no names given, or NAME among them.
 record() {
   local stack=$1 name=$2 at=$3 duration=$4 bag=$work/$2.bag port
   shift 4
@@ -36,7 +37,7 @@ record() {
     timeout $((duration + 120)) roslaunch -p "$port" spherical_robots "${stack}_stack.launch" "$@" \
     duration:="$duration" record:="$bag" > "$work/roslaunch.log" 2>&1 \
     || { tail -20 "$work/roslaunch.log"; sr_log "FAILED: recording $name"; exit 1; }
-  STACK=$stack "$SR_ROOT/scripts/rviz_screenshot.sh" "$bag" "$out_dir/$name.png" "$at"
+  [ "$at" = - ] || STACK=$stack "$SR_ROOT/scripts/rviz_screenshot.sh" "$bag" "$out_dir/$name.png" "$at"
   case $stack in
     norma|rotor|freebot)
       python3 "$SR_ROOT/scripts/plot_${stack}_run.py" "$bag" "$out_dir/${name/rviz/run}.png" \
@@ -49,4 +50,5 @@ record terrain terrain_rviz_RS_diamond 150 160 robot:=RS path:=diamond
 record roller roller_rviz_circle 60 100 path:=circle
 record norma norma_rviz_paper 55 60 controller:=paper speedup:=1
 record rotor rotor_rviz 15 17
+record rotor rotor_rviz_corrected - 50 corrections:=3
 record freebot freebot_rviz 26 28
