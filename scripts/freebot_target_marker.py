@@ -9,7 +9,7 @@ follows the goals others send (ik_target).
 Private params: ~initial, ~scale [m] (0.06), ~position_only (false: full pose goals).
 """
 import rospy
-from geometry_msgs.msg import PoseStamped
+from geometry_msgs.msg import PoseStamped, Quaternion
 from interactive_markers.interactive_marker_server import InteractiveMarkerServer
 from visualization_msgs.msg import InteractiveMarker, InteractiveMarkerControl, \
     InteractiveMarkerFeedback, Marker
@@ -60,7 +60,7 @@ def main():
         goal.header.stamp = rospy.Time.now()
         goal.pose = feedback.pose
         if position_only:
-            goal.pose.orientation.w = 0.0  # all zero: position only (freebot_ik)
+            goal.pose.orientation = Quaternion(0.0, 0.0, 0.0, 0.0)  # all zero: position only
         goal_pub.publish(goal)
         rospy.loginfo('target sent: %s', feedback.pose.position)
 

@@ -54,8 +54,10 @@ def read_bag(path, ns):
             raise RunError('%s has no %s (topics: %s)'
                            % (path, FREEBOT_STATE, ', '.join(sorted(topics)) or 'none'))
         kind = {topic: key for key, topic in names.items() if topic}
-        for topic, msg, _ in bag.read_messages(topics=sorted(t for t in kind if t in topics)):
-            key, stamp = kind[topic], msg.header.stamp.to_sec()
+        for topic, msg, bag_time in bag.read_messages(
+                topics=sorted(t for t in kind if t in topics)):
+            # A goal typed by hand is often stamped 0: it took effect when it was received.
+            key, stamp = kind[topic], msg.header.stamp.to_sec() or bag_time.to_sec()
             if key == 'states':
                 e = msg.end_effector
                 run['states'].append({

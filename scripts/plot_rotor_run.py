@@ -11,6 +11,8 @@ e.g.   roslaunch spherical_robots rotor_stack.launch record:=/tmp/rotor.bag
 Topics under <ns> (a topic missing there is looked up by its message type): planned_path (the
 plan, latched), odom (the plant's centre and attitude), actuators/command and actuators/state
 (rotor_1, rotor_2 [rad/s]), joint_states (rotor angles [rad]). Prints the end errors.
+The planned path is the plan from the zero state (planner's convention), as the stack runs it:
+for an execution started elsewhere, the start mark and the plan's end are not where it drove.
 """
 import math
 import os

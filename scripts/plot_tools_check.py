@@ -32,6 +32,7 @@ from spherical_robots.msg import FreebotGoalResult, FreebotState, NormaState, Tr
 HERE = os.path.dirname(os.path.realpath(__file__))
 sys.path.insert(0, HERE)
 import plot_freebot_run  # noqa: E402
+import plot_norma_run  # noqa: E402
 
 
 def stamp(t):
@@ -79,6 +80,21 @@ class PlotToolsCheck(unittest.TestCase):
         self.assertEqual(code, 0, err)
         self.assertIn('t 0.01-2.00 s', out)
         self.assertPng(self.path('norma.png'))
+        # Every column the figures draw, against the motion written (the desired point and |e|
+        # the latest before each state: published every 10 ms, states read every 10th ms).
+        # Stamps carry whole nanoseconds: t is known to 1e-9 s.
+        col = plot_norma_run.read_bag(bag_path, '/norma')
+        self.assertEqual(len(col['t']), 200)
+        for i, t in enumerate(col['t']):
+            self.assertAlmostEqual(col['X'][i], 0.1 * t, delta=1e-9)
+            self.assertAlmostEqual(col['Y'][i], 0.2 * t, delta=1e-9)
+            self.assertAlmostEqual(col['phi'][i], 0.01 * t, delta=1e-9)
+            self.assertAlmostEqual(col['delta'][i], 0.001 * t, delta=1e-9)
+            self.assertEqual((col['T'][i], col['F'][i], col['err'][i]), (0.5, -1.0, 0.01))
+            # the latest tracking error, stamped t' at most 9 ms before the state: X_d = 0.1 t' + 0.01
+            self.assertLessEqual(t - (col['Xd'][i] - 0.01) / 0.1, 0.009 + 1e-8)
+            self.assertGreaterEqual(t - (col['Xd'][i] - 0.01) / 0.1, -1e-8)
+            self.assertAlmostEqual(col['Yd'][i], 2.0 * (col['Xd'][i] - 0.01), delta=1e-12)
 
     def test_rotor_bag(self):
         bag_path = self.path('rotor.bag')
@@ -165,9 +181,10 @@ class PlotToolsCheck(unittest.TestCase):
         with open(not_a_bag, 'w') as f:
             f.write('no bag\n')
         for tool in ('plot_norma_run.py', 'plot_rotor_run.py', 'plot_freebot_run.py'):
-            for path, expected in ((empty, 'spherical_robots/NormaState'
-                                    if 'norma' in tool else 'no '),
-                                   (not_a_bag, 'cannot read')):
+            missing = {'plot_norma_run.py': 'spherical_robots/NormaState',
+                       'plot_rotor_run.py': 'nav_msgs/Odometry',
+                       'plot_freebot_run.py': 'spherical_robots/FreebotState'}[tool]
+            for path, expected in ((empty, missing), (not_a_bag, 'cannot read')):
                 code, out, err = run_tool(tool, path, self.path('x.png'))
                 self.assertEqual(code, 1, '%s %s: %s' % (tool, path, out + err))
                 self.assertIn(path, err)

@@ -69,6 +69,14 @@ class RotorPlannerCheck(unittest.TestCase):
         req.k, req.steps, req.u_a, req.v_a, req.psi = k, steps, u, v, psi
         return self.plan(req)
 
+    def test_00_diagnostics_before_any_odom(self):
+        # No odom is published in this test: the node reports anyway, once a second.
+        status = self.wait_for_status(lambda s: 'no message yet' in s.message,
+                                      'the missing odom reported')
+        self.assertEqual(status.level, DiagnosticStatus.WARN)
+        values = dict((v.key, v.value) for v in status.values)
+        self.assertEqual(values[rospy.resolve_name('odom') + ' accepted'], '0')
+
     def test_published_solution_and_its_path(self):
         R = self.radius
         res = self.request(2.5, 1, 0.0, R, 0.0)
@@ -116,6 +124,22 @@ class RotorPlannerCheck(unittest.TestCase):
         self.assertIn('steps', res.reason)
 
 
+    def publish_until_rejected(self, odom, msg, reason):
+        """Publishes msg on odom until diagnostics give `reason` as the last rejection."""
+        key = rospy.resolve_name('odom')
+        deadline = time.time() + 20.0
+        values = {}
+        while time.time() < deadline:
+            odom.publish(msg)
+            with self.lock:
+                values = dict((v.key, v.value) for v in self.status.values) if self.status else {}
+            if reason in values.get(key + ' last rejection', ''):
+                break
+            time.sleep(0.1)
+        self.assertIn(reason, values.get(key + ' last rejection', ''), values)
+        self.assertGreater(int(values.get(key + ' rejected', '0')), 0, values)
+        self.assertEqual(values.get(key + ' accepted'), '0', values)
+
     def test_refusals_and_bad_odom_on_diagnostics(self):
         res = self.request(2.5, 0, 0.0, self.radius, 0.0)
         self.assertFalse(res.success)
@@ -126,21 +150,12 @@ class RotorPlannerCheck(unittest.TestCase):
         execute.publish(UInt32(99))
         self.wait_for_status(lambda s: 'execute 99 refused' in s.message, 'the refused execute')
         odom = rospy.Publisher('odom', Odometry, queue_size=10)
+        unset = Odometry()  # an all-zero orientation: no attitude
+        self.publish_until_rejected(odom, unset, 'norm 1 within 1e-3')
         bad = Odometry()
         bad.pose.pose.position.x = float('nan')
         bad.pose.pose.orientation.w = 1.0
-        deadline = time.time() + 20.0
-        while time.time() < deadline:
-            odom.publish(bad)
-            with self.lock:
-                values = dict((v.key, v.value) for v in self.status.values) if self.status else {}
-            rejected = [int(v) for k, v in values.items() if k.endswith('/odom rejected')]
-            if rejected and rejected[0] > 0:
-                break
-            time.sleep(0.1)
-        self.assertTrue(rejected and rejected[0] > 0, values)
-        self.assertIn('must be finite, got nan', values.get(rospy.resolve_name('odom') + ' last rejection', ''),
-                      values)
+        self.publish_until_rejected(odom, bad, 'must be finite, got nan')
         # Still serving.
         self.assertTrue(self.request(2.5, 1, 0.0, self.radius, 0.0).success)
 

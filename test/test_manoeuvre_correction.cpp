@@ -13,6 +13,7 @@
 #include <tuple>
 #include <utility>
 
+#include "expect_invalid_argument.hpp"
 #include "spherical_robots/rotor/contact_kinematics.hpp"
 #include "spherical_robots/rotor/figure_eight.hpp"
 #include "spherical_robots/rotor/manoeuvre_correction.hpp"
@@ -111,8 +112,13 @@ TEST(ManoeuvreCorrection, MeasuredRestPoseReadsEq2Attitudes) {
                std::invalid_argument);
   EXPECT_THROW(measuredRestPose(0.0, 0.0, 0.1, Eigen::Quaterniond(nan, 0.0, 0.0, 0.0)),
                std::invalid_argument);
-  EXPECT_THROW(measuredRestPose(0.0, 0.0, 0.1, Eigen::Quaterniond(0.0, 1.0, 0.0, 0.0)),
-               std::invalid_argument);  // upside down
+  EXPECT_INVALID_ARGUMENT(measuredRestPose(0.0, 0.0, 0.1, Eigen::Quaterniond(0.0, 1.0, 0.0, 0.0)),
+                          "upside down");
+  // An unset odom orientation is no attitude.
+  EXPECT_INVALID_ARGUMENT(measuredRestPose(0.0, 0.0, 0.1, Eigen::Quaterniond(0.0, 0.0, 0.0, 0.0)),
+                          "norm 1 within 1e-3", "norm 0");
+  EXPECT_INVALID_ARGUMENT(measuredContactAngles(Eigen::Quaterniond(0.0, 0.0, 0.0, 0.0)),
+                          "norm 1 within 1e-3");
   EXPECT_THROW(planEnd({nan, 0.0, 0.0}, {}), std::invalid_argument);
   EXPECT_THROW(correctionTarget({}, {0.0, 0.0, nan}), std::invalid_argument);
 }
@@ -124,7 +130,8 @@ TEST(ManoeuvreCorrection, ContactAnglesReadEq2Attitudes) {
     EXPECT_NEAR(angles.x(), u_o, 1e-12);
     EXPECT_NEAR(angles.y(), v_o, 1e-12);
   }
-  EXPECT_THROW(measuredContactAngles(Eigen::Quaterniond(0.0, 1.0, 0.0, 0.0)), std::invalid_argument);
+  EXPECT_INVALID_ARGUMENT(measuredContactAngles(Eigen::Quaterniond(0.0, 1.0, 0.0, 0.0)),
+                          "above the sphere's equator");
 }
 
 // The arc traced through the plant: the contact ends at the south pole; the arc is a geodesic of

@@ -3,6 +3,7 @@
 #include <XmlRpcValue.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -56,7 +57,8 @@ double numberParam(const ros::NodeHandle& nh, const std::string& name, double fa
 
 int countParam(const ros::NodeHandle& nh, const std::string& name, int fallback, int minimum) {
   const double value = numberParam(nh, name, fallback);
-  if (value < minimum || value != std::floor(value)) {
+  if (value < minimum || value != std::floor(value) ||
+      value > static_cast<double>(std::numeric_limits<int>::max())) {
     std::ostringstream what;
     what << "parameter " << nh.resolveName(name) << " = " << value << " must be an integer >= "
          << minimum;

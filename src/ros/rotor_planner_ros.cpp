@@ -77,6 +77,10 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   odom_sub_ = nh.subscribe("odom", 10, &RotorPlannerRos::onOdometry, this);
   command_timer_ = nh_.createTimer(ros::Duration(command_period_), &RotorPlannerRos::onCommandTimer,
                                    this, false, false);
+  // The updater publishes only when called: a wall timer keeps /diagnostics going (and the odom
+  // input's staleness visible) when no odom arrives.
+  diagnostics_timer_ = nh.createWallTimer(ros::WallDuration(1.0),
+                                          [this](const ros::WallTimerEvent&) { updater_.update(); });
   updater_.setHardwareID("rotor sphere");
   updater_.add("rotor planner", this, &RotorPlannerRos::diagnose);
   ROS_INFO_STREAM("rotor_planner: R = " << radius_ << " m, circle radii up to " << max_radius_
@@ -198,15 +202,8 @@ void RotorPlannerRos::onExecute(const std_msgs::UInt32& msg) {
 bool RotorPlannerRos::startExecution(std::uint32_t index, const rotor::FigureEight& curve,
                                      int steps, const rotor::RestPose& goal, int corrections_left) {
   try {
-    double rate = curve_rate_;
     const double peak = rotor::peakRotorSpeed(plan_k_, inertia_scale_, curve);
-    if (max_rotor_speed_ > 0.0 && peak * rate > max_rotor_speed_) {
-      rate = max_rotor_speed_ / peak;
-      ROS_WARN_STREAM("rotor_planner: curve rate lowered from " << curve_rate_ << " to " << rate
-                                                                << " rad/s: peak rotor speed "
-                                                                << peak * curve_rate_ << " > "
-                                                                << max_rotor_speed_ << " rad/s");
-    }
+    const double rate = limitedCurveRate(peak);
     const rotor::CurveTiming timing = curveTiming(steps, rate);
     const double k = plan_k_;
     const double scale = inertia_scale_;
@@ -233,12 +230,24 @@ rotor::CurveTiming RotorPlannerRos::curveTiming(int steps, double rate) const {
   return rotor::CurveTiming(steps, rate, std::min(ramp_time_, 2.0 * M_PI * steps / rate));
 }
 
+double RotorPlannerRos::limitedCurveRate(double peak_at_unit_rate) const {
+  if (max_rotor_speed_ <= 0.0 || peak_at_unit_rate * curve_rate_ <= max_rotor_speed_) {
+    return curve_rate_;
+  }
+  const double rate = max_rotor_speed_ / peak_at_unit_rate;
+  ROS_WARN_STREAM("rotor_planner: curve rate lowered from " << curve_rate_ << " to " << rate
+                                                            << " rad/s: peak rotor speed "
+                                                            << peak_at_unit_rate * curve_rate_
+                                                            << " > " << max_rotor_speed_
+                                                            << " rad/s");
+  return rate;
+}
+
 bool RotorPlannerRos::startPoleReturn(const rotor::PoleReturnArc& arc, int corrections_left) {
-  // Its rotor speeds scale with the arc's angle: under 0.1 rad/s per 0.01 rad at θ̇ = 1 rad/s,
-  // far below any rotor limit, so the curve rate is not lowered.
-  const rotor::CurveTiming timing = curveTiming(1, curve_rate_);
   const double k = plan_k_;
   const double scale = inertia_scale_;
+  const rotor::CurveTiming timing = curveTiming(1, limitedCurveRate(rotor::peakRotorSpeed(
+      [&](double theta) { return rotor::arcSetPoint(k, scale, arc, theta, 1.0); })));
   const rotor::RestPose goal = execution_->goal;
   execution_ = Execution{execution_->index,
                          [k, scale, arc, timing](double t) {
@@ -250,7 +259,20 @@ bool RotorPlannerRos::startPoleReturn(const rotor::PoleReturnArc& arc, int corre
 }
 
 bool RotorPlannerRos::startCorrection() {
-  if (execution_->corrections_left <= 0 || !rest_pose_) return false;
+  if (execution_->corrections_left <= 0) return false;
+  if (!odom_input_.fresh(ros::Time::now())) {
+    refuse("no fresh odom on " + odom_input_.topic() + ": no correction from a stale rest");
+    return false;
+  }
+  try {
+    return planCorrection();
+  } catch (const std::invalid_argument& error) {
+    refuse(std::string("no correction: ") + error.what());
+    return false;
+  }
+}
+
+bool RotorPlannerRos::planCorrection() {
   const rotor::RestPose goal = execution_->goal;
   const auto [miss, turn_miss] = missFrom(goal);
   const int left = execution_->corrections_left - 1;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -10,6 +11,24 @@
 
 namespace spherical_robots::rotor {
 namespace {
+
+std::string describe(const Eigen::Quaterniond& q) {
+  std::ostringstream text;
+  text << "attitude quaternion (w " << q.w() << ", x " << q.x() << ", y " << q.y() << ", z "
+       << q.z() << ")";
+  return text.str();
+}
+
+/// A usable measured attitude: finite and of norm 1 within 1e-3 (a message's quaternion is unit
+/// to its float or printing precision; an unset one is all zero).
+void requireAttitude(const Eigen::Quaterniond& attitude) {
+  const double norm = attitude.coeffs().norm();
+  if (!attitude.coeffs().allFinite() || !(std::abs(norm - 1.0) <= 1e-3)) {
+    std::ostringstream text;
+    text << describe(attitude) << " must be finite with norm 1 within 1e-3, norm " << norm;
+    throw std::invalid_argument(text.str());
+  }
+}
 
 void requireFinitePose(double u_a, double v_a, double psi, const std::string& what) {
   requireFinite(u_a, what + " u_a [R]");
@@ -44,20 +63,27 @@ RestPose measuredRestPose(double centre_x, double centre_y, double radius,
   requireFinite(centre_x, "centre x [m]");
   requireFinite(centre_y, "centre y [m]");
   requirePositive(radius, "sphere radius [m]");
+  requireAttitude(attitude);
   const Eigen::Vector4d q = attitude.coeffs();  // x, y, z, w
-  if (!q.allFinite()) throw std::invalid_argument("attitude quaternion is not finite");
   // The twist about z of q = (x, y, z, w) is (0, 0, z, w) normalised; R_zᵀ(ψ) is a turn by −ψ.
-  if (std::hypot(q.z(), q.w()) < 1e-9 * q.norm()) {
-    throw std::invalid_argument(
-        "attitude has its vertical axis upside down: no rest pose at the south pole");
+  if (std::hypot(q.z(), q.w()) < 1e-9) {
+    throw std::invalid_argument(describe(attitude) +
+                                " turns the vertical upside down: no rest with the contact at the "
+                                "south pole");
   }
   return {centre_x / radius, centre_y / radius, wrapToPi(-2.0 * std::atan2(q.z(), q.w()))};
 }
 
 Eigen::Vector2d measuredContactAngles(const Eigen::Quaterniond& attitude) {
-  if (!attitude.coeffs().allFinite()) throw std::invalid_argument("attitude quaternion is not finite");
+  requireAttitude(attitude);
   const Eigen::Matrix3d rotation = attitude.normalized().toRotationMatrix();
-  return contactAngles(rotation.transpose() * Eigen::Vector3d(0.0, 0.0, -1.0));  // eqs 24-25
+  const Eigen::Vector3d contact = rotation.transpose() * Eigen::Vector3d(0.0, 0.0, -1.0);
+  if (!(contact.z() < 0.0)) {
+    throw std::invalid_argument(describe(attitude) + " puts the contact on or above the sphere's "
+                                "equator (z " + std::to_string(contact.z()) + " in the sphere's "
+                                "frame, must be < 0)");
+  }
+  return contactAngles(contact);  // eqs 24-25
 }
 
 PoleReturnArc::PoleReturnArc(double u_o, double v_o)
@@ -77,7 +103,8 @@ CurvePoint PoleReturnArc::at(double theta) const {
   const double fraction = std::clamp(theta, 0.0, 2.0 * M_PI) / (2.0 * M_PI);
   CurvePoint c;
   c.point = Eigen::AngleAxisd(fraction * angle_, axis_) * start_;
-  c.tangent = angle_ / (2.0 * M_PI) * axis_.cross(c.point);
+  // Outside [0, 2π] the clamped curve stands still.
+  if (theta >= 0.0 && theta <= 2.0 * M_PI) c.tangent = angle_ / (2.0 * M_PI) * axis_.cross(c.point);
   return c;
 }
 
@@ -87,11 +114,16 @@ RotorSpeeds arcSetPointAt(double k, double inertia_scale, const PoleReturnArc& a
     throw std::invalid_argument("a pole-return arc is traced in one step, not " +
                                 std::to_string(timing.steps()));
   }
-  const CurvePoint c = arc.at(timing.theta(t));
+  return arcSetPoint(k, inertia_scale, arc, timing.theta(t), timing.rate(t));
+}
+
+RotorSpeeds arcSetPoint(double k, double inertia_scale, const PoleReturnArc& arc, double theta,
+                        double theta_rate) {
+  const CurvePoint c = arc.at(theta);
   const Eigen::Vector2d angles = contactAngles(c.point);
   // ψ = 0 and the origin: the speeds are the same at every heading and place (eq 11).
   const ContactCoordinates at{0.0, 0.0, angles.x(), angles.y(), 0.0};
-  return rotorSpeeds(k, inertia_scale, at, curveAngularVelocity(k, c, 0.0, timing.rate(t)));
+  return rotorSpeeds(k, inertia_scale, at, curveAngularVelocity(k, c, 0.0, theta_rate));
 }
 
 }  // namespace spherical_robots::rotor

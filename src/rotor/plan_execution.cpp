@@ -123,15 +123,19 @@ RotorSpeeds lagCompensatedSetPoint(const SetPointSchedule& schedule, double t,
   return {now.phi1 + gain * (next.phi1 - now.phi1), now.phi2 + gain * (next.phi2 - now.phi2)};
 }
 
-double peakRotorSpeed(double k, double inertia_scale, const FigureEight& curve) {
+double peakRotorSpeed(const std::function<RotorSpeeds(double theta)>& at_unit_rate) {
   constexpr int kSamples = 4000;
   double peak = 0.0;
   for (int i = 0; i <= kSamples; ++i) {
-    const RotorSpeeds s =
-        planSetPoint(k, inertia_scale, curve, 1, 2.0 * M_PI * i / kSamples, 1.0);
+    const RotorSpeeds s = at_unit_rate(2.0 * M_PI * i / kSamples);
     peak = std::max({peak, std::abs(s.phi1), std::abs(s.phi2)});
   }
   return peak;
+}
+
+double peakRotorSpeed(double k, double inertia_scale, const FigureEight& curve) {
+  return peakRotorSpeed(
+      [&](double theta) { return planSetPoint(k, inertia_scale, curve, 1, theta, 1.0); });
 }
 
 ContactRates plantRates(double k, double inertia_scale, const ContactCoordinates& coordinates,

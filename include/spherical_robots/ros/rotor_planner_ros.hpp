@@ -61,7 +61,8 @@ namespace spherical_robots {
 /// is refused with a warning. An odom that is not finite or upside down is ignored (logged) and
 /// the last good rest pose kept. /diagnostics ("rotor planner"): executing or idle, plan and
 /// correction counts, the last refused plan request or execution, the last end's miss, and the
-/// odom input (stale after ~odom_timeout [s] (0.5), rejected count and reason).
+/// odom input (stale after ~odom_timeout [s] (0.5), rejected count and reason), at least once a
+/// second (wall). driven_path is labelled ~frame_id: odom is expected in that frame.
 class RotorPlannerRos {
  public:
   /// @throw std::invalid_argument on a bad parameter.
@@ -79,8 +80,13 @@ class RotorPlannerRos {
   /// Replaces the settled execution by the arc back to the pole, toward the same goal.
   bool startPoleReturn(const rotor::PoleReturnArc& arc, int corrections_left);
   rotor::CurveTiming curveTiming(int steps, double rate) const;
-  /// After an execution has settled: plans and starts a correction if one is due and possible.
+  /// ~curve_rate, lowered (with a warning) so that a manoeuvre whose rotors peak at
+  /// peak_at_unit_rate [rad/s] at θ̇ = 1 rad/s stays within ~max_rotor_speed.
+  double limitedCurveRate(double peak_at_unit_rate) const;
+  /// After an execution has settled: plans and starts a correction if one is due and possible
+  /// (never from a stale odom; a failure is refused, logged and reported, never thrown).
   bool startCorrection();
+  bool planCorrection();
   /// How far the last good rest pose is from the goal: [m] on the plane, [rad] of heading.
   std::pair<double, double> missFrom(const rotor::RestPose& goal) const;
   /// Logs a refusal as a warning and keeps it for /diagnostics.
@@ -141,6 +147,7 @@ class RotorPlannerRos {
   Trail driven_;  ///< driven_path, latched
   ros::Publisher done_pub_;
   ros::Timer command_timer_;
+  ros::WallTimer diagnostics_timer_;
 };
 
 }  // namespace spherical_robots

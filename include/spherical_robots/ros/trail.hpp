@@ -25,10 +25,9 @@ class Trail {
   /// Adds the pose stamped `now` and publishes; call it when due().
   void add(const ros::Time& now, const Eigen::Vector3d& position,
            const Eigen::Quaterniond& orientation);
-  /// Starts over (a new run), publishing nothing until the next extend().
+  /// Starts over (a new run), publishing nothing until the next add().
   void clear();
   void publish() const;
-  std::size_t size() const { return path_.poses.size(); }
 
  private:
   ros::Publisher publisher_;

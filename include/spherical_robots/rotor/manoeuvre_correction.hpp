@@ -42,14 +42,16 @@ PlanTarget correctionTarget(const RestPose& from, const RestPose& to);
 /// ψ from the attitude's twist about the vertical (the swing-twist decomposition; exact for an
 /// attitude R_zᵀ(ψ), and for a small tilt off the south pole the nearest such attitude up to
 /// second order in the tilt), in (−π, π].
-/// @throw std::invalid_argument on a non-finite input, radius <= 0, or an attitude whose
-///        vertical axis is turned upside down (no twist to take: |q_w|, |q_z| both ~0).
+/// @throw std::invalid_argument on a non-finite input, radius <= 0, an attitude not of norm 1
+///        within 1e-3 (an unset, all-zero one), or one whose vertical axis is turned upside down
+///        (no twist to take: |q_w|, |q_z| both ~0).
 RestPose measuredRestPose(double centre_x, double centre_y, double radius,
                           const Eigen::Quaterniond& attitude);
 
 /// (u_o, v_o) [rad] of the sphere's point touching the plane (eqs 24-25) for an attitude of Σ_o
 /// in Σ_a: the plane's downward normal seen from Σ_o.
-/// @throw std::invalid_argument on a non-finite attitude or a contact on or above the equator.
+/// @throw std::invalid_argument on an attitude not finite and of norm 1 within 1e-3, or a contact
+///        on or above the equator.
 Eigen::Vector2d measuredContactAngles(const Eigen::Quaterniond& attitude);
 
 /// The great-circle arc on the sphere from the contact point (u_o, v_o) back to the south pole,
@@ -62,7 +64,7 @@ class PoleReturnArc {
 
   /// Length of the arc [rad] (its angle at the centre); 0 at the pole.
   double angle() const { return angle_; }
-  /// c(θ) and c_θ, θ clamped to [0, 2π].
+  /// c(θ) and c_θ for θ in [0, 2π]; outside, the end point with c_θ = 0.
   CurvePoint at(double theta) const;
 
  private:
@@ -71,9 +73,14 @@ class PoleReturnArc {
   double angle_;
 };
 
-/// The rotor set-point [rad/s] at time t of tracing the arc with a one-step timing: eq 11
+/// The rotor set-point [rad/s] at arc parameter θ ∈ [0, 2π] advancing at θ̇ [rad/s]: eq 11
 /// (rotorSpeeds) on curveAngularVelocity, as planSetPoint does for a figure eight.
-/// @throw std::invalid_argument as rotorSpeeds(), or unless timing has one step.
+/// @throw std::invalid_argument as rotorSpeeds().
+RotorSpeeds arcSetPoint(double k, double inertia_scale, const PoleReturnArc& arc, double theta,
+                        double theta_rate);
+
+/// arcSetPoint at time t of a one-step timing.
+/// @throw std::invalid_argument as arcSetPoint(), or unless timing has one step.
 RotorSpeeds arcSetPointAt(double k, double inertia_scale, const PoleReturnArc& arc,
                           const CurveTiming& timing, double t);
 

@@ -67,8 +67,11 @@ using SetPointSchedule = std::function<RotorSpeeds(double t)>;
 RotorSpeeds lagCompensatedSetPoint(const SetPointSchedule& schedule, double t,
                                    double time_constant, double h);
 
-/// The largest |φ̇_i| [rad/s] along one step traced at θ̇ = 1 rad/s (speeds scale with θ̇),
-/// sampled at 2000 θ per leaf.
+/// The largest |φ̇_i| [rad/s] of a manoeuvre traced at θ̇ = 1 rad/s (speeds scale with θ̇):
+/// at_unit_rate(θ) gives the set-point at θ ∈ [0, 2π], sampled at 4001 θ.
+double peakRotorSpeed(const std::function<RotorSpeeds(double theta)>& at_unit_rate);
+
+/// peakRotorSpeed of one step of a figure eight (2000 θ per leaf).
 double peakRotorSpeed(double k, double inertia_scale, const FigureEight& curve);
 
 /// The plant: contact-coordinate rates for measured rotor speeds (eq 11 solved for ω, then
