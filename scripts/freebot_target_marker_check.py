@@ -71,6 +71,15 @@ class FreebotTargetMarkerCheck(unittest.TestCase):
         feedback.header.stamp = rospy.Time.now()
         self.feedback.publish(feedback)
 
+    def marker_after(self, goal, what):
+        """The marker's pose once the server has moved it to `goal` (sent on ik_target)."""
+        x = goal.pose.position.x
+        self.ik_target.publish(goal)
+        wait_until(lambda: any(abs(p.position.x - x) < 1e-9 for p in self.marker_poses),
+                   'the marker at ' + what, DEADLINE)
+        with self.lock:
+            return [p for p in self.marker_poses if abs(p.position.x - x) < 1e-9][-1]
+
     def test_01_offers_the_target_at_table_ii_a(self):
         wait_until(lambda: self.init is not None, 'update_full', DEADLINE)
         markers = {m.name: m for m in self.init.markers}
@@ -119,20 +128,12 @@ class FreebotTargetMarkerCheck(unittest.TestCase):
         full.header.frame_id = 'world'
         full.pose.position.x, full.pose.position.y, full.pose.position.z = 0.1151, 0.1489, 0.0291
         full.pose.orientation.w, full.pose.orientation.x = 0.6, 0.8
-        self.ik_target.publish(full)
-        wait_until(lambda: any(abs(p.position.x - 0.1151) < 1e-9 for p in self.marker_poses),
-                   'the marker at the full-pose goal', DEADLINE)
-        with self.lock:
-            moved = [p for p in self.marker_poses if abs(p.position.x - 0.1151) < 1e-9][-1]
-        self.assertEqual(pose_list(moved), pose_list(full.pose))
+        self.assertEqual(pose_list(self.marker_after(full, 'the full-pose goal')),
+                         pose_list(full.pose))
         position_only = PoseStamped()
         position_only.header.frame_id = 'world'
         position_only.pose.position.x, position_only.pose.position.z = 0.2, 0.05
-        self.ik_target.publish(position_only)
-        wait_until(lambda: any(abs(p.position.x - 0.2) < 1e-9 for p in self.marker_poses),
-                   'the marker at the position-only goal', DEADLINE)
-        with self.lock:
-            kept = [p for p in self.marker_poses if abs(p.position.x - 0.2) < 1e-9][-1]
+        kept = self.marker_after(position_only, 'the position-only goal')
         self.assertEqual(pose_list(kept)[:3], [0.2, 0.0, 0.05])
         self.assertEqual(pose_list(kept)[3:], [0.6, 0.8, 0.0, 0.0])  # the marker's, kept
 
