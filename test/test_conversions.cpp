@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "expect_invalid_argument.hpp"
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/surface.hpp"
@@ -33,11 +34,15 @@ geometry_msgs::Twist twist(double vx, double vy, double wz) {
   return msg;
 }
 
+constexpr double kMaxRate = 100.0;     // [rad/s]
+constexpr double kMaxTwist = 10.0;     // [m/s, rad/s]
+constexpr double kMaxPosition = 1e3;   // [m]
+
 }  // namespace
 
 TEST(JointStateConversion, ReadsRatesByNameInAnyOrder) {
   const auto rates = conv::ratesFromJointState(
-      RobotType::ThreeAxisRolling, jointState({"psi", "theta", "extra", "phi"}, {3.0, 1.0, 9.0, 2.0}));
+      RobotType::ThreeAxisRolling, jointState({"psi", "theta", "extra", "phi"}, {3.0, 1.0, 9.0, 2.0}), kMaxRate);
   EXPECT_EQ(rates.roll_rate, 1.0);
   EXPECT_EQ(rates.lateral_rate, 2.0);
   EXPECT_EQ(rates.turn_rate, 3.0);
@@ -45,29 +50,37 @@ TEST(JointStateConversion, ReadsRatesByNameInAnyOrder) {
 
 TEST(JointStateConversion, UnactuatedRatesAreZero) {
   const auto rt = conv::ratesFromJointState(RobotType::RollingAndTurning,
-                                            jointState({"theta", "psi", "phi"}, {1.0, 3.0, 2.0}));
+                                            jointState({"theta", "psi", "phi"}, {1.0, 3.0, 2.0}), kMaxRate);
   EXPECT_EQ(rt.roll_rate, 1.0);
   EXPECT_EQ(rt.lateral_rate, 0.0);
   EXPECT_EQ(rt.turn_rate, 3.0);
   const auto rs = conv::ratesFromJointState(RobotType::RollingAndSteering,
-                                            jointState({"alpha", "phi", "psi"}, {1.0, 2.0, 3.0}));
+                                            jointState({"alpha", "phi", "psi"}, {1.0, 2.0, 3.0}), kMaxRate);
   EXPECT_EQ(rs.roll_rate, 1.0);
   EXPECT_EQ(rs.lateral_rate, 2.0);
   EXPECT_EQ(rs.turn_rate, 0.0);
 }
 
 TEST(JointStateConversion, RejectsMissingNamesNonFiniteValuesAndShortArrays) {
-  EXPECT_THROW(conv::ratesFromJointState(RobotType::TwoAxisRolling, jointState({"theta"}, {1.0})),
+  EXPECT_THROW(conv::ratesFromJointState(RobotType::TwoAxisRolling, jointState({"theta"}, {1.0}), kMaxRate),
                std::invalid_argument);
   EXPECT_THROW(conv::ratesFromJointState(RobotType::TwoAxisRolling,
-                                         jointState({"theta", "phi"}, {1.0, kNaN})),
+                                         jointState({"theta", "phi"}, {1.0, kNaN}), kMaxRate),
                std::invalid_argument);
   EXPECT_THROW(conv::ratesFromJointState(RobotType::TwoAxisRolling,
-                                         jointState({"theta", "phi"}, {1.0})),
+                                         jointState({"theta", "phi"}, {1.0}), kMaxRate),
                std::invalid_argument);
+  // Finite but implausible: 1e300 overflows two operations later. The bound itself is a rate.
+  EXPECT_INVALID_ARGUMENT(conv::ratesFromJointState(RobotType::TwoAxisRolling,
+                                                    jointState({"theta", "phi"}, {1.0, -1e300}),
+                                                    kMaxRate),
+                          "phi", "100", "2R");
+  EXPECT_NO_THROW(conv::ratesFromJointState(RobotType::TwoAxisRolling,
+                                            jointState({"theta", "phi"}, {1.0, -kMaxRate}),
+                                            kMaxRate));
   // A non-finite value of a joint the type does not have is none of its business.
   EXPECT_NO_THROW(conv::ratesFromJointState(RobotType::TwoAxisRolling,
-                                            jointState({"theta", "phi", "psi"}, {1.0, 2.0, kNaN})));
+                                            jointState({"theta", "phi", "psi"}, {1.0, 2.0, kNaN}), kMaxRate));
 }
 
 TEST(JointStateConversion, WritesTheTypesActuatorsOnly) {
@@ -79,7 +92,7 @@ TEST(JointStateConversion, WritesTheTypesActuatorsOnly) {
   EXPECT_EQ(msg.header.stamp, ros::Time(5.0));
   for (RobotType type : {RobotType::ThreeAxisRolling, RobotType::TwoAxisRolling,
                          RobotType::RollingAndTurning, RobotType::RollingAndSteering}) {
-    const auto round_trip = conv::ratesFromJointState(type, conv::jointStateFromRates(type, rates, {}));
+    const auto round_trip = conv::ratesFromJointState(type, conv::jointStateFromRates(type, rates, {}), kMaxRate);
     const auto expected = sr::terrain::keepActuated(type, rates);
     EXPECT_EQ(round_trip.roll_rate, expected.roll_rate);
     EXPECT_EQ(round_trip.lateral_rate, expected.lateral_rate);
@@ -89,15 +102,17 @@ TEST(JointStateConversion, WritesTheTypesActuatorsOnly) {
 
 TEST(TwistConversion, TakesThePlanarPartAndListsTheRest) {
   geometry_msgs::Twist msg = twist(0.2, 0.1, 0.5);
-  const auto planar = conv::planarTwist(msg);
+  const auto planar = conv::planarTwist(msg, kMaxTwist);
   EXPECT_EQ(planar.request.forward, 0.2);
   EXPECT_EQ(planar.request.leftward, 0.1);
   EXPECT_EQ(planar.request.yaw_rate, 0.5);
   EXPECT_TRUE(planar.ignored.empty());
   msg.linear.z = 1.0;
   msg.angular.x = 1.0;
-  EXPECT_EQ(conv::planarTwist(msg).ignored, (std::vector<std::string>{"linear.z", "angular.x"}));
-  EXPECT_THROW(conv::planarTwist(twist(kNaN, 0, 0)), std::invalid_argument);
+  EXPECT_EQ(conv::planarTwist(msg, kMaxTwist).ignored, (std::vector<std::string>{"linear.z", "angular.x"}));
+  EXPECT_THROW(conv::planarTwist(twist(kNaN, 0, 0), kMaxTwist), std::invalid_argument);
+  EXPECT_INVALID_ARGUMENT(conv::planarTwist(twist(1e300, 0, 0), kMaxTwist), "linear.x", "10");
+  EXPECT_INVALID_ARGUMENT(conv::planarTwist(twist(0, 0, -11.0), kMaxTwist), "angular.z");
 }
 
 TEST(TerrainStateConversion, GeometryRoundTrip) {
@@ -121,7 +136,7 @@ TEST(TerrainStateConversion, GeometryRoundTrip) {
   EXPECT_EQ(msg.header.frame_id, "world");
   EXPECT_EQ(msg.turn_rate, 3.0);
 
-  const auto back = conv::contactGeometryFromMsg(msg);
+  const auto back = conv::contactGeometryFromMsg(msg, kMaxPosition);
   EXPECT_TRUE(back.contact_point.isApprox(geometry.contact_point, 1e-12));
   EXPECT_TRUE(back.centre.isApprox(geometry.centre, 1e-12));
   EXPECT_TRUE(back.heading_frame.isApprox(geometry.heading_frame, 1e-12));
@@ -132,21 +147,28 @@ TEST(TerrainStateConversion, RejectsBadGeometry) {
   spherical_robots::TerrainState msg;
   msg.normal.z = 1.0;
   msg.heading.x = 1.0;
-  EXPECT_NO_THROW(conv::contactGeometryFromMsg(msg));
+  EXPECT_NO_THROW(conv::contactGeometryFromMsg(msg, kMaxPosition));
 
   auto bad = msg;
   bad.contact_point.y = kNaN;
-  EXPECT_THROW(conv::contactGeometryFromMsg(bad), std::invalid_argument);
+  EXPECT_THROW(conv::contactGeometryFromMsg(bad, kMaxPosition), std::invalid_argument);
+  bad = msg;
+  bad.contact_point.x = 1e300;
+  EXPECT_INVALID_ARGUMENT(conv::contactGeometryFromMsg(bad, kMaxPosition), "contact_point.x",
+                          "1000");
+  bad = msg;
+  bad.centre.z = -2e3;
+  EXPECT_INVALID_ARGUMENT(conv::contactGeometryFromMsg(bad, kMaxPosition), "centre.z");
   bad = msg;
   bad.normal.z = 2.0;  // not unit
-  EXPECT_THROW(conv::contactGeometryFromMsg(bad), std::invalid_argument);
+  EXPECT_THROW(conv::contactGeometryFromMsg(bad, kMaxPosition), std::invalid_argument);
   bad = msg;
   bad.heading.x = 0.0;  // h = n
   bad.heading.z = 1.0;
-  EXPECT_THROW(conv::contactGeometryFromMsg(bad), std::invalid_argument);
+  EXPECT_THROW(conv::contactGeometryFromMsg(bad, kMaxPosition), std::invalid_argument);
   bad = msg;
   bad.normal.z = -1.0;  // points down
-  EXPECT_THROW(conv::contactGeometryFromMsg(bad), std::invalid_argument);
+  EXPECT_THROW(conv::contactGeometryFromMsg(bad, kMaxPosition), std::invalid_argument);
 }
 
 TEST(OdometryConversion, TwistIsInTheChildFrame) {
@@ -201,7 +223,7 @@ TEST(FreebotConversion, WheelNamesPairsAndOrder) {
   msg.name = {"module2_wheel_left", "other", "module1_wheel_right", "module2_wheel_right",
               "module1_wheel_left"};
   msg.velocity = {4.0, 9.0, 1.0, 3.0, 2.0};
-  const auto wheels = sr::conversions::wheelSpeedsFromJointState(msg, 2);
+  const auto wheels = sr::conversions::wheelSpeedsFromJointState(msg, 2, kMaxRate);
   ASSERT_EQ(wheels.size(), 2u);
   EXPECT_EQ(wheels[0].right, 1.0);
   EXPECT_EQ(wheels[0].left, 2.0);
@@ -212,7 +234,7 @@ TEST(FreebotConversion, WheelNamesPairsAndOrder) {
   EXPECT_EQ(command.name, names);
   EXPECT_EQ(command.velocity, (std::vector<double>{1.0, 2.0, 3.0, 4.0}));
   msg.name.pop_back();
-  EXPECT_THROW(sr::conversions::wheelSpeedsFromJointState(msg, 2), std::invalid_argument);
+  EXPECT_THROW(sr::conversions::wheelSpeedsFromJointState(msg, 2, kMaxRate), std::invalid_argument);
 }
 
 TEST(FreebotConversion, ChainStateRoundTripAndRejections) {

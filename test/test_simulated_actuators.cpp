@@ -81,7 +81,8 @@ TEST(SimulatedActuators, StepSetPointRampsAtExactlyMaxAcceleration) {
 
 TEST(SimulatedActuators, SetPointClampedAtMaxVelocity) {
   auto actuators = makeActuators(10.0, 20.0, 100.0);
-  ASSERT_EQ(actuators.command({"theta", "psi"}, {100.0, -1e9}, 0.0), "");
+  // 100 times the limit is still a (clamped) set-point; beyond it, see the next test.
+  ASSERT_EQ(actuators.command({"theta", "psi"}, {100.0, -1000.0}, 0.0), "");
   EXPECT_EQ(actuators.setpoints()[0], 10.0);
   EXPECT_EQ(actuators.setpoints()[2], -10.0);
   stepTo(actuators, 0.0, 2.0, 0.01);
@@ -216,6 +217,45 @@ TEST(SimulatedActuators, TimeGoingBackwardsIsIgnored) {
   EXPECT_EQ(actuators.positions()[0], position);
   actuators.update(1.1);
   EXPECT_NEAR(actuators.positions()[0], rampPosition(2.0, 20.0, 1.1), 1e-12);
+}
+
+TEST(SimulatedActuators, ImplausibleSetPointsAreRejectedNotClampedAndChangeNothing) {
+  auto actuators = makeActuators(10.0, 20.0, 0.5);
+  ASSERT_EQ(actuators.command({"theta"}, {2.0}, 0.0), "");
+  for (double huge : {1e300, -1e300, 1000.000001}) {
+    const std::string reason = actuators.command({"phi", "theta"}, {1.0, huge}, 0.1);
+    EXPECT_TRUE(contains(reason, "'theta'") && contains(reason, "100 times its limit 10"))
+        << reason;
+  }
+  // The rejected commands touched nothing: not phi's set-point, not the watchdog (0.5 s after the
+  // accepted command at 0, not after the rejected ones at 0.1).
+  EXPECT_EQ(actuators.setpoints()[0], 2.0);
+  EXPECT_EQ(actuators.setpoints()[1], 0.0);
+  actuators.update(0.5);
+  EXPECT_TRUE(actuators.timedOut());
+}
+
+TEST(SimulatedActuators, RebaseAfterAClockJumpTakesNoTimeAsElapsed) {
+  // A stray /clock 1000 s ahead, then back: the actuators neither integrate 1000 s nor freeze
+  // until the clock reaches 1000 s again.
+  auto actuators = makeActuators(10.0, 20.0, 0.5);
+  ASSERT_EQ(actuators.command({"theta"}, {2.0}, 0.0), "");
+  actuators.update(0.2);
+  const double position = actuators.positions()[0];
+  const double velocity = actuators.velocities()[0];
+  actuators.rebase(1000.2);
+  EXPECT_EQ(actuators.positions()[0], position);
+  EXPECT_EQ(actuators.velocities()[0], velocity);
+  EXPECT_FALSE(actuators.timedOut());
+  EXPECT_NEAR(actuators.commandAge(), 0.2, kTol);
+  actuators.rebase(0.21);
+  EXPECT_EQ(actuators.now(), 0.21);
+  EXPECT_NEAR(actuators.commandAge(), 0.2, kTol);
+  // Commands and time go on from the rebased clock: the ramp continues from where it was.
+  ASSERT_EQ(actuators.command({"theta"}, {2.0}, 0.31), "");
+  EXPECT_NEAR(actuators.positions()[0], rampPosition(2.0, 20.0, 0.3), 1e-12);
+  actuators.update(0.81);
+  EXPECT_TRUE(actuators.timedOut());  // 0.5 s after the command at 0.31, in rebased time
 }
 
 TEST(SimulatedActuators, LateCommandTakesEffectAtTheLatestTimeSeen) {

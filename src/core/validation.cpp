@@ -11,4 +11,10 @@ void rejectNumber(double value, std::string_view what, const char* requirement) 
   throw std::invalid_argument(message.str());
 }
 
+void rejectMagnitude(double value, double bound, std::string_view what) {
+  std::ostringstream message;
+  message << what << " must be finite with magnitude <= " << bound << ", got " << value;
+  throw std::invalid_argument(message.str());
+}
+
 }  // namespace spherical_robots

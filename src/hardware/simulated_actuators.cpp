@@ -29,6 +29,10 @@ void requireNonNegative(double value, const std::string& what) {
   }
 }
 
+double limitOf(const ActuatorLimits& limits) {
+  return limits.kind == ActuatorKind::Effort ? limits.max_effort : limits.max_velocity;
+}
+
 }  // namespace
 
 SimulatedActuators::SimulatedActuators(std::vector<std::string> names,
@@ -113,13 +117,20 @@ std::string SimulatedActuators::command(const std::vector<std::string>& names,
           << setpoints[k] << " for actuator '" << names[k] << "'";
       return msg.str();
     }
+    const double limit = limitOf(limits_[index[k]]);
+    if (std::abs(setpoints[k]) > kImplausibleFactor * limit) {
+      std::ostringstream msg;
+      msg << (limits_[index[k]].kind == ActuatorKind::Effort ? "effort " : "velocity ")
+          << setpoints[k] << " for actuator '" << names[k] << "' is beyond " << kImplausibleFactor
+          << " times its limit " << limit << ": not a set-point";
+      return msg.str();
+    }
   }
 
   update(t);
   for (std::size_t k = 0; k < names.size(); ++k) {
     const std::size_t i = index[k];
-    const double limit = limits_[i].kind == ActuatorKind::Effort ? limits_[i].max_effort
-                                                                 : limits_[i].max_velocity;
+    const double limit = limitOf(limits_[i]);
     setpoints_[i] = std::clamp(setpoints[k], -limit, limit);
     if (std::abs(setpoints[k]) > limit) ++saturations_[i];
     if (models_[i].dead_time > 0.0)
@@ -174,6 +185,20 @@ void SimulatedActuators::update(double t) {
     applyInstantEfforts();
     if (now_ >= t) break;
   }
+  measure();
+}
+
+void SimulatedActuators::rebase(double t) {
+  if (!std::isfinite(t)) return;
+  if (!clock_started_) {
+    update(t);
+    return;
+  }
+  const double shift = t - now_;
+  last_command_time_ += shift;
+  for (auto& queue : pending_)
+    for (auto& pending : queue) pending.time += shift;
+  now_ = t;
   measure();
 }
 

@@ -12,6 +12,8 @@ namespace spherical_robots::conversions {
 namespace {
 
 constexpr double kUnitTolerance = 1e-6;
+// [rad] a trolley heading is an angle the chain winds up; no run turns a trolley a million radians.
+constexpr double kMaxHeading = 1e6;
 
 double& rateAt(terrain::DriveRates& rates, std::size_t i) {
   std::array<double*, 3> fields{&rates.roll_rate, &rates.lateral_rate, &rates.turn_rate};
@@ -65,6 +67,22 @@ Eigen::Vector3d fromPoint(const geometry_msgs::Point& p, const std::string& fiel
   return {p.x, p.y, p.z};
 }
 
+Eigen::Vector3d boundedPoint(const geometry_msgs::Point& p, const std::string& field,
+                             double max_magnitude) {
+  requireMagnitudeAtMost(p.x, max_magnitude, field + ".x");
+  requireMagnitudeAtMost(p.y, max_magnitude, field + ".y");
+  requireMagnitudeAtMost(p.z, max_magnitude, field + ".z");
+  return {p.x, p.y, p.z};
+}
+
+Eigen::Vector3d boundedVector3(const geometry_msgs::Vector3& v, const std::string& field,
+                               double max_magnitude) {
+  requireMagnitudeAtMost(v.x, max_magnitude, field + ".x");
+  requireMagnitudeAtMost(v.y, max_magnitude, field + ".y");
+  requireMagnitudeAtMost(v.z, max_magnitude, field + ".z");
+  return {v.x, v.y, v.z};
+}
+
 Eigen::Vector3d fromVector3(const geometry_msgs::Vector3& v, const std::string& field) {
   requireFinite(v.x, field + ".x");
   requireFinite(v.y, field + ".y");
@@ -116,7 +134,8 @@ namespace {
 
 /// values[k] of each named actuator (values: msg.velocity or msg.effort, called `what`).
 std::vector<double> valuesByName(const sensor_msgs::JointState& msg, const std::vector<double>& values,
-                                 const std::string& what, const std::vector<std::string>& names) {
+                                 const std::string& what, const std::vector<std::string>& names,
+                                 double max_magnitude) {
   if (values.size() < msg.name.size()) {
     std::ostringstream problem;
     problem << "JointState has " << msg.name.size() << " names but " << values.size() << " "
@@ -129,7 +148,7 @@ std::vector<double> valuesByName(const sensor_msgs::JointState& msg, const std::
     if (found == msg.name.end())
       throw std::invalid_argument("JointState lacks actuator '" + name + "'");
     const double value = values[found - msg.name.begin()];
-    requireFinite(value, what + " of actuator '" + name + "'");
+    requireMagnitudeAtMost(value, max_magnitude, what + " of actuator '" + name + "'");
     found_values.push_back(value);
   }
   return found_values;
@@ -138,13 +157,13 @@ std::vector<double> valuesByName(const sensor_msgs::JointState& msg, const std::
 }  // namespace
 
 std::vector<double> velocitiesByName(const sensor_msgs::JointState& msg,
-                                     const std::vector<std::string>& names) {
-  return valuesByName(msg, msg.velocity, "velocity", names);
+                                     const std::vector<std::string>& names, double max_rate) {
+  return valuesByName(msg, msg.velocity, "velocity", names, max_rate);
 }
 
 std::vector<double> effortsByName(const sensor_msgs::JointState& msg,
-                                  const std::vector<std::string>& names) {
-  return valuesByName(msg, msg.effort, "effort", names);
+                                  const std::vector<std::string>& names, double max_effort) {
+  return valuesByName(msg, msg.effort, "effort", names, max_effort);
 }
 
 sensor_msgs::JointState velocityJointState(const std::vector<std::string>& names,
@@ -175,11 +194,12 @@ std::pair<std::vector<std::size_t>, std::vector<std::string>> actuatedRateNames(
 
 }  // namespace
 
-terrain::DriveRates ratesFromJointState(terrain::RobotType type, const sensor_msgs::JointState& msg) {
+terrain::DriveRates ratesFromJointState(terrain::RobotType type, const sensor_msgs::JointState& msg,
+                                        double max_rate) {
   const auto [indices, names] = actuatedRateNames(type);
   std::vector<double> velocities;
   try {
-    velocities = velocitiesByName(msg, names);
+    velocities = velocitiesByName(msg, names, max_rate);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string(e.what()) + " (robot type " +
                                 terrain::toString(type) + ")");
@@ -197,9 +217,9 @@ sensor_msgs::JointState jointStateFromRates(terrain::RobotType type, const terra
   return velocityJointState(names, velocities, stamp);
 }
 
-PlanarTwist planarTwist(const geometry_msgs::Twist& twist) {
-  const Eigen::Vector3d linear = fromVector3(twist.linear, "linear");
-  const Eigen::Vector3d angular = fromVector3(twist.angular, "angular");
+PlanarTwist planarTwist(const geometry_msgs::Twist& twist, double max_magnitude) {
+  const Eigen::Vector3d linear = boundedVector3(twist.linear, "linear", max_magnitude);
+  const Eigen::Vector3d angular = boundedVector3(twist.angular, "angular", max_magnitude);
   PlanarTwist result;
   result.request = {linear.x(), linear.y(), angular.z()};
   if (linear.z() != 0.0) result.ignored.emplace_back("linear.z");
@@ -230,7 +250,8 @@ spherical_robots::TerrainState toTerrainStateMsg(terrain::RobotType type, terrai
   return msg;
 }
 
-terrain::ContactGeometry contactGeometryFromMsg(const spherical_robots::TerrainState& msg) {
+terrain::ContactGeometry contactGeometryFromMsg(const spherical_robots::TerrainState& msg,
+                                                double max_position) {
   const Eigen::Vector3d normal = fromVector3(msg.normal, "normal");
   const Eigen::Vector3d heading = fromVector3(msg.heading, "heading");
   requireUnit(normal, "normal");
@@ -246,8 +267,8 @@ terrain::ContactGeometry contactGeometryFromMsg(const spherical_robots::TerrainS
     throw std::invalid_argument(what.str());
   }
   terrain::ContactGeometry geometry;
-  geometry.contact_point = fromPoint(msg.contact_point, "contact_point");
-  geometry.centre = fromPoint(msg.centre, "centre");
+  geometry.contact_point = boundedPoint(msg.contact_point, "contact_point", max_position);
+  geometry.centre = boundedPoint(msg.centre, "centre", max_position);
   geometry.heading_frame.col(0) = heading;
   geometry.heading_frame.col(1) = normal.cross(heading);
   geometry.heading_frame.col(2) = normal;
@@ -366,8 +387,8 @@ std::vector<std::string> freebotWheelNames(std::size_t modules) {
 }
 
 std::vector<freebot::WheelSpeeds> wheelSpeedsFromJointState(const sensor_msgs::JointState& msg,
-                                                            std::size_t modules) {
-  const std::vector<double> values = velocitiesByName(msg, freebotWheelNames(modules));
+                                                            std::size_t modules, double max_rate) {
+  const std::vector<double> values = velocitiesByName(msg, freebotWheelNames(modules), max_rate);
   std::vector<freebot::WheelSpeeds> wheels(modules);
   for (std::size_t i = 0; i < modules; ++i) wheels[i] = {values[2 * i], values[2 * i + 1]};
   return wheels;
@@ -411,8 +432,7 @@ freebot::ChainState chainStateFromMsg(const spherical_robots::FreebotState& msg)
     const std::string joint = "[" + std::to_string(i) + "]";
     state.joints.push_back({fromQuaternion(msg.link[i], "link" + joint),
                             fromQuaternion(msg.base[i], "base" + joint)});
-    if (!std::isfinite(msg.heading[i]))
-      throw std::invalid_argument("heading" + joint + " is not finite");
+    requireMagnitudeAtMost(msg.heading[i], kMaxHeading, "heading" + joint + " [rad]");
     state.headings.push_back(msg.heading[i]);
   }
   return state;

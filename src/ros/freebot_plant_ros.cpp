@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <sstream>
+#include <cmath>
 #include <stdexcept>
 
 #include "spherical_robots/FreebotState.h"
@@ -58,7 +59,8 @@ FreebotPlantRos::FreebotPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : chain_(freebotChainFromParams(nh)),
       prefix_(stringParam(pnh, "frame_prefix", "")),
       step_(positiveParam(pnh, "step", 0.01)),
-      timeline_(numberParam(pnh, "duration", 0.0)),
+      timeline_(pnh),
+      max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
       publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
       trail_(nh, "trail", kWorldFrame, positiveParam(pnh, "trail_period", 0.1), kMaxTrailPoints),
       state_(chain_.alignedState()),
@@ -82,7 +84,7 @@ FreebotPlantRos::FreebotPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 
 void FreebotPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
   try {
-    wheels_ = conversions::wheelSpeedsFromJointState(msg, chain_.moduleCount());
+    wheels_ = conversions::wheelSpeedsFromJointState(msg, chain_.moduleCount(), max_actuator_rate_);
     actuator_input_.accept(ros::Time::now());
   } catch (const std::invalid_argument& e) {
     actuator_input_.reject(e.what());
@@ -94,7 +96,17 @@ void FreebotPlantRos::tick(const ros::Time& now) {
   const std::vector<freebot::WheelSpeeds> wheels =
       actuator_input_.fresh(now) ? wheels_
                                  : std::vector<freebot::WheelSpeeds>(chain_.moduleCount());
-  timeline_.tick(now, [&](double elapsed) { state_ = chain_.advance(state_, wheels, elapsed); });
+  timeline_.tick(now, [&](double elapsed) {
+    freebot::ChainState next = chain_.advance(state_, wheels, elapsed);
+    // Nothing non-finite is published: a step that would produce it is a failed step.
+    for (std::size_t i = 0; i < next.joints.size(); ++i) {
+      if (!next.joints[i].link.coeffs().allFinite() || !next.joints[i].base.coeffs().allFinite() ||
+          !std::isfinite(next.headings[i]))
+        throw std::runtime_error("the step produced a non-finite state of joint " +
+                                 std::to_string(i + 1));
+    }
+    state_ = std::move(next);
+  });
   const freebot::LinkPose end = chain_.manipulator().endEffector(state_.joints);
   state_pub_.publish(conversions::toFreebotStateMsg(state_, end, kWorldFrame, now));
   if (trail_.due(now)) trail_.add(now, end.position, end.orientation);

@@ -54,6 +54,7 @@ visualization_msgs::Marker marker(const std::string& frame, const ros::Time& sta
 FrictionDriveControllerRos::FrictionDriveControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : actuation_(loadActuation(nh)),
       last_motor_rates_(2, 0.0),
+      max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
       input_(nh.resolveName("drive/command"), positiveParam(pnh, "input_timeout", 0.5)),
       updater_(nh, pnh) {
   command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", 10);
@@ -69,7 +70,8 @@ FrictionDriveControllerRos::FrictionDriveControllerRos(ros::NodeHandle nh, ros::
 void FrictionDriveControllerRos::onDriveCommand(const sensor_msgs::JointState& msg) {
   try {
     const std::array<double, 2> motor_rates =
-        actuation_.motorRates(conversions::ratesFromJointState(terrain::RobotType::TwoAxisRolling, msg));
+        actuation_.motorRates(conversions::ratesFromJointState(terrain::RobotType::TwoAxisRolling,
+                                                               msg, max_actuator_rate_));
     last_motor_rates_.assign(motor_rates.begin(), motor_rates.end());
     input_.accept(ros::Time::now());
     command_pub_.publish(conversions::velocityJointState(kMotorNames, last_motor_rates_, msg.header.stamp));
@@ -90,6 +92,7 @@ FrictionDriveSimRos::FrictionDriveSimRos(ros::NodeHandle nh, ros::NodeHandle pnh
     : actuation_(loadActuation(nh)),
       heading_frame_(stringParam(pnh, "frame_prefix", "") + "heading"),
       marker_period_(1.0 / positiveParam(pnh, "marker_rate", 20.0)),
+      max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
       input_(nh.resolveName("actuators/state"), positiveParam(pnh, "input_timeout", 0.5)),
       updater_(nh, pnh) {
   drive_state_pub_ = nh.advertise<sensor_msgs::JointState>("drive/state", 10);
@@ -107,7 +110,8 @@ FrictionDriveSimRos::FrictionDriveSimRos(ros::NodeHandle nh, ros::NodeHandle pnh
 void FrictionDriveSimRos::onActuatorState(const sensor_msgs::JointState& msg) {
   roller::DriveState state;
   try {
-    const std::vector<double> rates = conversions::velocitiesByName(msg, kMotorNames);
+    const std::vector<double> rates =
+        conversions::velocitiesByName(msg, kMotorNames, max_actuator_rate_);
     state = actuation_.driveState({rates[0], rates[1]});
   } catch (const std::invalid_argument& e) {
     input_.reject(e.what());  // the plant keeps the last good drive state until it goes stale

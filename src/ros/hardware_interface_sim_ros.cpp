@@ -185,6 +185,7 @@ std::string setpointsOf(const sensor_msgs::JointState& msg,
 HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : actuators_(makeActuators(pnh)),
       command_input_(nh.resolveName("actuators/command"), actuators_.commandTimeout()),
+      clock_(positiveParam(pnh, "max_clock_step", 5.0)),
       updater_(nh, pnh) {
   const double rate = positiveParam(pnh, "rate", 100.0);
   state_msg_.name = actuators_.names();
@@ -222,6 +223,7 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
 void HardwareInterfaceSimRos::commandCallback(const sensor_msgs::JointState::ConstPtr& msg) {
   // The watchdog counts from arrival, not from header.stamp: many publishers leave it zero.
   const ros::Time now = ros::Time::now();
+  followClock(now);
   std::vector<double> setpoints;
   std::string reason = setpointsOf(*msg, actuators_, setpoints);
   if (reason.empty()) reason = actuators_.command(msg->name, setpoints, now.toSec());
@@ -236,6 +238,7 @@ void HardwareInterfaceSimRos::commandCallback(const sensor_msgs::JointState::Con
 void HardwareInterfaceSimRos::eStopCallback(const std_msgs::Bool::ConstPtr& msg) {
   if (msg->data == actuators_.eStopped()) return;
   const ros::Time now = ros::Time::now();
+  followClock(now);
   actuators_.setEStop(msg->data, now.toSec());
   if (msg->data)
     ROS_ERROR("hardware_interface_sim: e-stop engaged: actuators stopped, commands rejected");
@@ -248,6 +251,7 @@ void HardwareInterfaceSimRos::eStopCallback(const std_msgs::Bool::ConstPtr& msg)
 
 void HardwareInterfaceSimRos::timerCallback(const ros::TimerEvent&) {
   const ros::Time now = ros::Time::now();
+  followClock(now);
   actuators_.update(now.toSec());
   if (actuators_.timedOut() && !reported_timeout_) {
     ROS_WARN("hardware_interface_sim: no command for %g s: actuators brought to rest",
@@ -256,6 +260,16 @@ void HardwareInterfaceSimRos::timerCallback(const ros::TimerEvent&) {
   }
   publishState(now);
   updater_.update();
+}
+
+void HardwareInterfaceSimRos::followClock(const ros::Time& now) {
+  const ClockStep step = clock_.observe(now.toSec());
+  if (step != ClockStep::kJumpForward && step != ClockStep::kJumpBack) return;
+  const double from = actuators_.now();
+  actuators_.rebase(now.toSec());
+  ROS_WARN_STREAM("hardware_interface_sim: ROS time jumped from " << from << " to " << now.toSec()
+                  << " s (" << toString(step) << ", more than max_clock_step " << clock_.maxStep()
+                  << " s): continuing from the new time, no time taken as elapsed");
 }
 
 void HardwareInterfaceSimRos::publishState(const ros::Time& stamp) {
@@ -277,12 +291,14 @@ void HardwareInterfaceSimRos::diagnose(diagnostic_updater::DiagnosticStatusWrapp
     status.summary(DiagnosticStatus::OK, "waiting for the first command");
   else
     status.summary(DiagnosticStatus::OK, "following commands");
-  // Not command_input_.report(): its key names and its WARN before the first command and on
-  // rejections are not this node's (docs/hardware_interface.md); the watchdog decides staleness.
+  // Not command_input_.report(): its key names and its WARN before the first command are not
+  // this node's (docs/hardware_interface.md); the watchdog decides staleness.
   status.add("accepted commands", command_input_.accepted());
   status.add("rejected commands", command_input_.rejected());
   const std::string& reason = command_input_.lastReason();
   status.add("last rejection", reason.empty() ? std::string("none") : reason);
+  command_input_.reportRejections(status);
+  status.add("clock jumps", clock_.jumps());
   status.add("command timeout [s]", actuators_.commandTimeout());
   status.add("command age [s]", actuators_.commandAge());
   for (std::size_t i = 0; i < actuators_.names().size(); ++i) {

@@ -10,6 +10,7 @@
 
 #include "spherical_robots/TrackingError.h"
 #include "spherical_robots/config/norma_description.hpp"
+#include "spherical_robots/hardware/simulated_actuators.hpp"
 #include "spherical_robots/norma/norma_simulation.hpp"
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
@@ -21,8 +22,8 @@ namespace {
 const std::string kWorldFrame = "world";
 constexpr double kPathPeriod = 200.0 * M_PI;  // [s] eq 52 repeats after 2π / 0.01
 constexpr int kDesiredPathSamples = 2000;
-constexpr double kMaxIntegrationGap = 0.1;  // [s] a longer gap between states is not integrated
 constexpr double kLateAge = 0.002;           // [s] two 1 ms ticks: the delay the 1 kHz loop is built for
+const std::vector<std::string> kActuators = {"pendulum_motor", "slider_motor"};
 
 norma::ControllerKind controllerFromString(const std::string& name) {
   if (name == "paper") return norma::ControllerKind::kPaper;
@@ -50,13 +51,21 @@ nav_msgs::Path desiredPath(const ros::Time& stamp) {
   return path;
 }
 
+norma::EffortLimits effortLimits(const ros::NodeHandle& pnh) {
+  return {positiveParam(pnh, "max_torque", 20.0), positiveParam(pnh, "max_force", 200.0)};
+}
+
 }  // namespace
 
 NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : parameters_(parametersOf(nh)),
-      controller_(parameters_, parsedParam(pnh, "controller", "paper", controllerFromString)),
+      loop_(norma::NormaController(parameters_,
+                                   parsedParam(pnh, "controller", "paper", controllerFromString)),
+            effortLimits(pnh)),
       publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
+      max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
       input_(nh.resolveName("norma_state"), positiveParam(pnh, "input_timeout", 0.05)),
+      actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "input_timeout", 0.05)),
       updater_(nh, pnh) {
   command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", 10);
   error_pub_ = nh.advertise<spherical_robots::TrackingError>("tracking_error", 10);
@@ -64,40 +73,56 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   desired_path_pub_ = nh.advertise<nav_msgs::Path>("desired_path", 1, true);
   desired_path_pub_.publish(desiredPath(ros::Time::now()));
   state_sub_ = nh.subscribe("norma_state", 10, &NormaControllerRos::onState, this);
+  actuator_sub_ = nh.subscribe("actuators/state", 10, &NormaControllerRos::onActuatorState, this);
   updater_.setHardwareID("Norma");
   updater_.add("norma controller", this, &NormaControllerRos::diagnose);
   ROS_INFO_STREAM("Norma controller: "
-                  << (controller_.kind() == norma::ControllerKind::kPaper ? "paper (eqs 48-51, Table 1)"
-                                                                          : "tracking")
+                  << (controller().kind() == norma::ControllerKind::kPaper
+                          ? "paper (eqs 48-51, Table 1)"
+                          : "tracking")
                   << ", path eq 52 from the first state on " << input_.topic());
+}
+
+void NormaControllerRos::onActuatorState(const sensor_msgs::JointState& msg) {
+  try {
+    const norma::EffortLimits& limits = loop_.limits();
+    const std::vector<double> efforts = conversions::effortsByName(
+        msg, kActuators, hardware::kImplausibleFactor * std::max(limits.max_torque, limits.max_force));
+    loop_.actuatorsApplied(efforts[0], efforts[1]);
+    actuator_input_.accept(ros::Time::now());
+  } catch (const std::invalid_argument& e) {
+    actuator_input_.reject(e.what());
+  }
 }
 
 void NormaControllerRos::onState(const spherical_robots::NormaState& msg) {
   const ros::Time now = msg.header.stamp;
-  if (path_start_.isZero() || now < last_state_) {  // first state, or ROS time jumped back
-    path_start_ = now;
-    integrals_.setZero();
-  } else {
-    const double gap = (now - last_state_).toSec();
-    if (gap > 0.0 && gap <= kMaxIntegrationGap) integrals_ += last_output_.integrand * gap;
-  }
-  last_state_ = now;
-  const double t = (now - path_start_).toSec();
-  const norma::PathPoint reference = norma::lissajousPath(t);
+  norma::ControlOutput output;
   try {
-    const norma::Vector4 q(msg.q[0], msg.q[1], msg.q[2], msg.q[3]);
-    const norma::Vector4 qd(msg.qd[0], msg.qd[1], msg.qd[2], msg.qd[3]);
-    last_output_ = controller_.compute(q, qd, msg.x, msg.y, msg.psi, integrals_, reference);
+    // The loop validates the state before it changes anything; the stamp is checked against
+    // the clock first, so a state stamped in the future cannot move the path clock.
+    const std::string stamp_problem = stampProblem(now, ros::Time::now(), max_stamp_skew_);
+    if (!stamp_problem.empty()) throw std::invalid_argument("norma_state " + stamp_problem);
+    if (msg.q.size() != 4 || msg.qd.size() != 4)
+      throw std::invalid_argument("norma_state needs 4 q and 4 qd, got " +
+                                  std::to_string(msg.q.size()) + " and " +
+                                  std::to_string(msg.qd.size()));
+    norma::NormaMeasurement state;
+    state.q = norma::Vector4(msg.q[0], msg.q[1], msg.q[2], msg.q[3]);
+    state.qd = norma::Vector4(msg.qd[0], msg.qd[1], msg.qd[2], msg.qd[3]);
+    state.x = msg.x;
+    state.y = msg.y;
+    state.psi = msg.psi;
+    output = loop_.step(now.toSec(), state);
   } catch (const std::invalid_argument& e) {
-    last_output_.integrand.setZero();
     input_.reject(e.what());  // nothing commanded: the hardware keeps the last good efforts
     return;
   }
   input_.accept(ros::Time::now());
   sensor_msgs::JointState command;
   command.header.stamp = now;
-  command.name = {"pendulum_motor", "slider_motor"};
-  command.effort = {last_output_.torque, last_output_.force};
+  command.name = kActuators;
+  command.effort = {output.torque, output.force};
   command_pub_.publish(command);
   const double age = (ros::Time::now() - now).toSec();
   max_state_age_ = std::max(max_state_age_, age);
@@ -110,14 +135,15 @@ void NormaControllerRos::onState(const spherical_robots::NormaState& msg) {
 
   if (periodDue(last_publish_, now, publish_period_)) {
     last_publish_ = now;
+    const norma::PathPoint reference = loop_.reference(now.toSec());
     spherical_robots::TrackingError error;
     error.header.stamp = now;
     error.header.frame_id = kWorldFrame;
     error.desired = conversions::toPoint({reference.x, reference.y, 0.0});
     error.desired_velocity = conversions::toVector3({reference.x_dot, reference.y_dot, 0.0});
     error.error = conversions::toVector3({reference.x - msg.x, reference.y - msg.y, 0.0});
-    error.error_norm = last_output_.error;
-    error.zeta = norma::kinematicLayer(controller_.gains().kinematic,
+    error.error_norm = output.error;
+    error.zeta = norma::kinematicLayer(controller().gains().kinematic,
                                        parameters_.R, msg.x, msg.y, msg.psi,
                                        reference).zeta;
     error_pub_.publish(error);
@@ -131,18 +157,21 @@ void NormaControllerRos::onState(const spherical_robots::NormaState& msg) {
 
 void NormaControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   status.summary(diagnostic_msgs::DiagnosticStatus::OK, "controlling");
-  status.add("controller", controller_.kind() == norma::ControllerKind::kPaper ? "paper" : "tracking");
-  status.add("|e| [m]", last_output_.error);
-  status.add("T [N m]", last_output_.torque);
-  status.add("F [N]", last_output_.force);
-  status.add("theta_dot_d [rad/s]", last_output_.theta_dot_d);
-  status.add("delta_d [m]", last_output_.delta_d);
+  const norma::ControlOutput& output = loop_.lastOutput();
+  status.add("controller", controller().kind() == norma::ControllerKind::kPaper ? "paper" : "tracking");
+  status.add("|e| [m]", output.error);
+  status.add("T [N m]", output.torque);
+  status.add("F [N]", output.force);
+  status.add("theta_dot_d [rad/s]", output.theta_dot_d);
+  status.add("delta_d [m]", output.delta_d);
+  status.add("integrals held (actuators stopped)", loop_.actuatorsStopped());
   status.add("max state age at command [ms]", max_state_age_ * 1e3);
   status.add("late commands (> 2 ms)", late_commands_);
   if (max_state_age_ > kLateAge)
     status.mergeSummary(diagnostic_msgs::DiagnosticStatus::WARN, "commands late: lower the speed-up");
   max_state_age_ = 0.0;
   input_.report(status, ros::Time::now());
+  actuator_input_.reportRejections(status);
 }
 
 }  // namespace spherical_robots

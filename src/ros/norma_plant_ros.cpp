@@ -41,7 +41,8 @@ NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
                 parsedParam(pnh, "variant", "text", variantFromString)),
       base_frame_(stringParam(pnh, "frame_prefix", "") + "base_link"),
       step_(positiveParam(pnh, "step", 0.001)),
-      timeline_(numberParam(pnh, "duration", 0.0)),
+      timeline_(pnh),
+      max_actuator_effort_(positiveParam(pnh, "max_actuator_effort", 1e4)),
       publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
       trail_(nh, "trail", kWorldFrame, positiveParam(pnh, "trail_period", 0.5), kMaxTrailPoints),
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.05)),
@@ -67,7 +68,7 @@ NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 
 void NormaPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
   try {
-    const std::vector<double> efforts = conversions::effortsByName(msg, kActuators);
+    const std::vector<double> efforts = conversions::effortsByName(msg, kActuators, max_actuator_effort_);
     torque_ = efforts[0];
     force_ = efforts[1];
     actuator_input_.accept(ros::Time::now());

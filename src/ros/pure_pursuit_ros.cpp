@@ -9,6 +9,7 @@
 
 #include "spherical_robots/TrackingError.h"
 #include "spherical_robots/config/terrain_config.hpp"
+#include "spherical_robots/core/validation.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 
 namespace spherical_robots {
@@ -29,6 +30,10 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : type_(parsedParam(pnh, "robot_type", "3R", terrain::robotTypeFromString)),
       mode_(parsedParam(pnh, "mode", "tracking", modeFromString)),
       radius_(radiusFromRobotDescription(nh)),
+      max_position_(positiveParam(pnh, "max_position", 1e3)),
+      max_cmd_vel_(positiveParam(pnh, "max_cmd_vel", 10.0)),
+      max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
+      clock_(positiveParam(pnh, "max_clock_step", 5.0)),
       input_(nh.resolveName(mode_ == Mode::Tracking ? "terrain_state" : "cmd_vel"),
              positiveParam(pnh, "input_timeout", 0.5)),
       updater_(nh, pnh) {
@@ -71,11 +76,17 @@ void PurePursuitRos::onTerrainState(const spherical_robots::TerrainState& msg) {
     return;
   }
   const bool primary = mode_ == Mode::Tracking;
+  const ros::Time now = ros::Time::now();
   try {
-    geometry_ = conversions::contactGeometryFromMsg(msg);
-    if (!std::isfinite(msg.phi)) throw std::invalid_argument("terrain_state phi is not finite");
+    // Everything checked before anything changes: a rejected state leaves the last good one.
+    const std::string stamp_problem = stampProblem(msg.header.stamp, now, max_stamp_skew_);
+    if (!stamp_problem.empty()) throw std::invalid_argument("terrain_state " + stamp_problem);
+    const terrain::ContactGeometry geometry =
+        conversions::contactGeometryFromMsg(msg, max_position_);
+    requireMagnitudeAtMost(msg.phi, M_PI, "terrain_state phi [rad]");
+    geometry_ = geometry;
     tilt_ = msg.phi;
-    if (primary) input_.accept(ros::Time::now());
+    if (primary) input_.accept(now);
   } catch (const std::invalid_argument& e) {
     if (primary) input_.reject(e.what());
     ROS_WARN_STREAM_THROTTLE(1.0, "Ignoring terrain_state: " << e.what());
@@ -84,7 +95,7 @@ void PurePursuitRos::onTerrainState(const spherical_robots::TerrainState& msg) {
 
 void PurePursuitRos::onCmdVel(const geometry_msgs::Twist& msg) {
   try {
-    const conversions::PlanarTwist twist = conversions::planarTwist(msg);
+    const conversions::PlanarTwist twist = conversions::planarTwist(msg, max_cmd_vel_);
     request_ = twist.request;
     input_.accept(ros::Time::now());
     warnIgnoredOnce(twist.ignored);
@@ -104,6 +115,14 @@ void PurePursuitRos::warnIgnoredOnce(const std::vector<std::string>& fields) {
 
 void PurePursuitRos::onTimer(const ros::TimerEvent&) {
   const ros::Time now = ros::Time::now();
+  const double previous = clock_.latest();
+  const ClockStep step = clock_.observe(now.toSec());
+  if ((step == ClockStep::kJumpForward || step == ClockStep::kJumpBack) && !start_.isZero()) {
+    // The reference goes on from where it was, not from where the jump would put it.
+    start_ += ros::Duration(now.toSec() - previous);
+    ROS_WARN_STREAM("ROS time jumped from " << previous << " to " << now.toSec()
+                                            << " s; the reference continues where it was");
+  }
   try {
     command_ = mode_ == Mode::Tracking ? track(now) : teleop(now);
   } catch (const std::exception& e) {
@@ -122,14 +141,22 @@ terrain::DriveRates PurePursuitRos::track(const ros::Time& now) {
   if (start_.isZero()) start_ = now;
   const terrain::DesiredPoint desired =
       terrain::liftOntoSurface(*path_, *surface_, (now - start_).toSec());
-  error_ = terrain::trackingError(*geometry_, desired.position);
+  const terrain::TrackingError error = terrain::trackingError(*geometry_, desired.position);
+  const terrain::DriveRates rates = controller_->command(error, desired.velocity);
+  // Nothing non-finite is published; onTimer() commands zero instead.
+  requireFinite(error.norm, "|e_t|");
+  requireFinite(error.zeta, "zeta");
+  requireFinite(rates.roll_rate, "roll rate set-point");
+  requireFinite(rates.lateral_rate, "lateral rate set-point");
+  requireFinite(rates.turn_rate, "turn rate set-point");
+  error_ = error;
   error_pub_.publish(conversions::toTrackingErrorMsg(error_, desired, kWorldFrame, now));
   geometry_msgs::PointStamped target;
   target.header.stamp = now;
   target.header.frame_id = kWorldFrame;
   target.point = conversions::toPoint(desired.position);
   target_pub_.publish(target);
-  return controller_->command(error_, desired.velocity);
+  return rates;
 }
 
 terrain::DriveRates PurePursuitRos::teleop(const ros::Time& now) {

@@ -25,7 +25,8 @@ RotorPlantRos::RotorPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       radius_(positiveParam(pnh, "sphere_radius", 0.1)),
       base_frame_(stringParam(pnh, "frame_prefix", "") + "base_link"),
       step_(positiveParam(pnh, "step", 0.001)),
-      timeline_(numberParam(pnh, "duration", 0.0)),
+      timeline_(pnh),
+      max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
       publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.5)),
       updater_(nh, pnh) {
@@ -42,7 +43,7 @@ RotorPlantRos::RotorPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 
 void RotorPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
   try {
-    const std::vector<double> velocities = conversions::velocitiesByName(msg, kRotors);
+    const std::vector<double> velocities = conversions::velocitiesByName(msg, kRotors, max_actuator_rate_);
     speeds_ = {velocities[0], velocities[1]};
     // Positions only drive the URDF's joints; a state without them keeps the last ones.
     if (msg.position.size() == msg.name.size()) {
@@ -63,8 +64,13 @@ void RotorPlantRos::tick(const ros::Time& now) {
   if (timeline_.finished()) return;
   const bool fresh = actuator_input_.fresh(now);
   timeline_.tick(now, [&](double elapsed) {
-    state_ = rotor::advancePlant(k_, inertia_scale_, state_,
-                                 fresh ? speeds_ : rotor::RotorSpeeds{}, elapsed, step_);
+    const auto next = rotor::advancePlant(k_, inertia_scale_, state_,
+                                          fresh ? speeds_ : rotor::RotorSpeeds{}, elapsed, step_);
+    // Nothing non-finite is published: a step that would produce it is a failed step.
+    if (!std::isfinite(next.u_a) || !std::isfinite(next.v_a) || !std::isfinite(next.u_o) ||
+        !std::isfinite(next.v_o) || !std::isfinite(next.psi))
+      throw std::runtime_error("the step produced a non-finite contact state");
+    state_ = next;
   });
   if (periodDue(last_publish_, now, publish_period_)) publishPose(now);
   updater_.update();

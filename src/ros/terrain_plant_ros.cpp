@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "spherical_robots/TerrainState.h"
 #include "spherical_robots/config/terrain_config.hpp"
@@ -26,9 +27,10 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       base_frame_(stringParam(pnh, "frame_prefix", "") + "base_link"),
       heading_frame_(stringParam(pnh, "frame_prefix", "") + "heading"),
       step_(positiveParam(pnh, "step", 0.01)),
-      timeline_(numberParam(pnh, "duration", 0.0)),
+      timeline_(pnh),
       publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
       trail_(nh, "trail", kWorldFrame, positiveParam(pnh, "trail_period", 0.5), kMaxTrailPoints),
+      max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.5)),
       updater_(nh, pnh) {
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
@@ -63,7 +65,7 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 
 void TerrainPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
   try {
-    measured_ = conversions::ratesFromJointState(type_, msg);
+    measured_ = conversions::ratesFromJointState(type_, msg, max_actuator_rate_);
     actuator_input_.accept(ros::Time::now());
   } catch (const std::invalid_argument& e) {
     actuator_input_.reject(e.what());
@@ -94,6 +96,11 @@ void TerrainPlantRos::tick(const ros::Time& now) {
 void TerrainPlantRos::integrate(double elapsed, const terrain::DriveRates& rates) {
   const terrain::RollingState next =
       terrain::advanceWithHeldRates(*kinematics_, {state_, orientation_}, rates, elapsed, step_);
+  // Nothing non-finite is published: a step that would produce it is a failed step.
+  if (!std::isfinite(next.state.x) || !std::isfinite(next.state.y) ||
+      !std::isfinite(next.state.psi) || !std::isfinite(next.state.phi) ||
+      !next.orientation.coeffs().allFinite())
+    throw std::runtime_error("the step produced a non-finite state");
   state_ = next.state;
   orientation_ = next.orientation;
 }

@@ -44,6 +44,10 @@ struct ActuatorModel {
   double velocity_noise = 0.0;
 };
 
+/// A set-point beyond this many times its actuator's limit is not clamped but rejected: it is no
+/// set-point a controller meant (an overflow, a unit error, a hostile sender).
+constexpr double kImplausibleFactor = 100.0;
+
 /// A set of velocity-controlled actuators. Times are in seconds on any monotonic clock (the node
 /// passes ROS time); the first time seen starts the clock. A time earlier than the latest one seen
 /// is treated as that latest time: the state never runs backwards.
@@ -70,7 +74,8 @@ class SimulatedActuators {
   /// restarts at t. Names not mentioned keep their set-point. With a dead time the
   /// set-point becomes active dead_time after t (activeSetpoints()); setpoints() shows it at once.
   /// @return an empty string if accepted, else the reason (e-stop engaged, no names, names/values
-  ///         size mismatch, unknown or duplicate name, non-finite value or time). A rejected
+  ///         size mismatch, unknown or duplicate name, non-finite value or time, a value beyond
+  ///         kImplausibleFactor times its limit). A rejected
   ///         command changes nothing, not even the watchdog or the clock.
   std::string command(const std::vector<std::string>& names, const std::vector<double>& setpoints,
                       double t);
@@ -87,6 +92,13 @@ class SimulatedActuators {
   /// seen): set-points (pending ones too), velocities and efforts become 0 at once, positions
   /// hold, until the next command. A new measurement is taken.
   void stop(double t);
+
+  /// The clock jumped to t [s] (core/clock_jump.hpp: a stray /clock, a replay looping back):
+  /// continues from t with the state as it is and no time elapsed. The watchdog keeps the age of
+  /// the last command and delayed set-points their delay, so neither fires early nor freezes
+  /// until the clock catches up with a time it jumped to. A new measurement is taken. A
+  /// non-finite t is ignored; before the first time seen it starts the clock, as update().
+  void rebase(double t);
 
   /// Engages (stop(t), then every command is rejected) or releases the e-stop latch. Releasing
   /// leaves the actuators at rest; they move again on the next accepted command.

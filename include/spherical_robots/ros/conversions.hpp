@@ -42,6 +42,12 @@ geometry_msgs::Quaternion toQuaternion(const Eigen::Quaterniond& q);
 /// @throw std::invalid_argument naming `field` if a coordinate is not finite.
 Eigen::Vector3d fromPoint(const geometry_msgs::Point& p, const std::string& field);
 Eigen::Vector3d fromVector3(const geometry_msgs::Vector3& v, const std::string& field);
+/// As fromPoint and fromVector3, and @throw std::invalid_argument naming `field` if a coordinate's
+/// magnitude exceeds max_magnitude (plausibility: 1e300 is finite, and overflows on).
+Eigen::Vector3d boundedPoint(const geometry_msgs::Point& p, const std::string& field,
+                             double max_magnitude);
+Eigen::Vector3d boundedVector3(const geometry_msgs::Vector3& v, const std::string& field,
+                               double max_magnitude);
 
 geometry_msgs::TransformStamped toTransform(const Eigen::Vector3d& translation,
                                             const Eigen::Quaterniond& rotation,
@@ -61,27 +67,28 @@ nav_msgs::Odometry toOdometry(const Eigen::Vector3d& position, const Eigen::Quat
 
 // --- Drive rates <-> actuators -----------------------------------------------------------------
 
-/// Drive rates [rad/s] from the velocities of a JointState named by the type's actuators
-/// (terrain::rateNames: 3R theta, phi, psi; 2R theta, phi; RT theta, psi; RS alpha, phi); rates the
-/// type does not actuate are 0, names the type does not have are ignored.
-/// @throw std::invalid_argument if an actuator of the type is missing, the velocity array is
-/// shorter than the name array, or a velocity is not finite.
 /// The velocity [rad/s] of each named actuator in msg, in the order of names (others ignored).
 /// @throw std::invalid_argument naming the problem: fewer velocities than names in msg, a name
-/// missing, a non-finite velocity.
+/// missing, a velocity not finite or of magnitude above max_rate [rad/s] (no actuator's rate).
 std::vector<double> velocitiesByName(const sensor_msgs::JointState& msg,
-                                     const std::vector<std::string>& names);
+                                     const std::vector<std::string>& names, double max_rate);
 
-/// The effort [N m or N] of each named actuator in msg, as velocitiesByName.
+/// The effort [N m or N] of each named actuator in msg, as velocitiesByName, bounded by
+/// max_effort.
 std::vector<double> effortsByName(const sensor_msgs::JointState& msg,
-                                  const std::vector<std::string>& names);
+                                  const std::vector<std::string>& names, double max_effort);
 
 /// A JointState with these names and velocities [rad/s] (no positions, no efforts).
 sensor_msgs::JointState velocityJointState(const std::vector<std::string>& names,
                                            const std::vector<double>& velocities,
                                            const ros::Time& stamp);
 
-terrain::DriveRates ratesFromJointState(terrain::RobotType type, const sensor_msgs::JointState& msg);
+/// Drive rates [rad/s] from the velocities of a JointState named by the type's actuators
+/// (terrain::rateNames: 3R theta, phi, psi; 2R theta, phi; RT theta, psi; RS alpha, phi); rates the
+/// type does not actuate are 0, names the type does not have are ignored.
+/// @throw std::invalid_argument as velocitiesByName, naming the robot type.
+terrain::DriveRates ratesFromJointState(terrain::RobotType type, const sensor_msgs::JointState& msg,
+                                        double max_rate);
 
 /// A JointState with the type's actuator names and their rates [rad/s] as velocities (no
 /// positions, no efforts).
@@ -95,8 +102,9 @@ struct PlanarTwist {
   std::vector<std::string> ignored;  ///< non-zero fields no rolling sphere can follow
 };
 
-/// @throw std::invalid_argument on a non-finite field.
-PlanarTwist planarTwist(const geometry_msgs::Twist& twist);
+/// @throw std::invalid_argument on a field that is not finite or of magnitude above max_magnitude
+/// [m/s or rad/s] (a person's command, not an overflow: it would drive the robot at its limits).
+PlanarTwist planarTwist(const geometry_msgs::Twist& twist, double max_magnitude);
 
 // --- Terrain state and tracking ----------------------------------------------------------------
 
@@ -110,9 +118,11 @@ spherical_robots::TerrainState toTerrainStateMsg(terrain::RobotType type, terrai
 
 /// The contact geometry a TerrainState message describes: P0, centre, R_L = [h, n x h, n] and the
 /// gradient (f_x, f_y) = -(n_x, n_y) / n_z.
-/// @throw std::invalid_argument if a field is not finite, n or h is not a unit vector, h is not
-/// perpendicular to n, or n does not point up (tolerance 1e-6).
-terrain::ContactGeometry contactGeometryFromMsg(const spherical_robots::TerrainState& msg);
+/// @throw std::invalid_argument if a field is not finite, a coordinate of P0 or the centre exceeds
+/// max_position [m], n or h is not a unit vector, h is not perpendicular to n, or n does not point
+/// up (tolerance 1e-6).
+terrain::ContactGeometry contactGeometryFromMsg(const spherical_robots::TerrainState& msg,
+                                                double max_position);
 
 spherical_robots::TrackingError toTrackingErrorMsg(const terrain::TrackingError& error,
                                                    const terrain::DesiredPoint& desired,
@@ -148,7 +158,7 @@ std::vector<std::string> freebotWheelNames(std::size_t modules);
 /// Every module's wheel speeds [rad/s] from the velocities of a JointState (names as
 /// freebotWheelNames, others ignored). @throw std::invalid_argument as velocitiesByName.
 std::vector<freebot::WheelSpeeds> wheelSpeedsFromJointState(const sensor_msgs::JointState& msg,
-                                                            std::size_t modules);
+                                                            std::size_t modules, double max_rate);
 
 /// A JointState commanding these wheel speeds [rad/s] (names as freebotWheelNames).
 sensor_msgs::JointState jointStateFromWheelSpeeds(const std::vector<freebot::WheelSpeeds>& wheels,
@@ -161,7 +171,7 @@ spherical_robots::FreebotState toFreebotStateMsg(const freebot::ChainState& stat
 
 /// The chain state a FreebotState message describes (quaternions normalised).
 /// @throw std::invalid_argument if the arrays differ in length, a quaternion is not unit within
-/// 1e-6 or a heading is not finite.
+/// 1e-6 or a heading is not finite or beyond 1e6 rad.
 freebot::ChainState chainStateFromMsg(const spherical_robots::FreebotState& msg);
 
 }  // namespace spherical_robots::conversions

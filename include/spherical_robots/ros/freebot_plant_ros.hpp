@@ -53,6 +53,7 @@ class FreebotPlantRos {
   std::string prefix_;
   double step_;
   PlantTimeline timeline_;
+  double max_actuator_rate_;  ///< [rad/s] a measured rate beyond it is rejected (plausibility)
   double publish_period_;
   Trail trail_;
   freebot::ChainState state_;

@@ -37,6 +37,7 @@ class FrictionDriveControllerRos {
 
   roller::RollerActuation actuation_;
   std::vector<double> last_motor_rates_;
+  double max_actuator_rate_;  ///< [rad/s] a rate beyond it is rejected (plausibility)
   InputMonitor input_;
   ros::Subscriber command_sub_;
   ros::Publisher command_pub_;
@@ -62,6 +63,7 @@ class FrictionDriveSimRos {
   roller::RollerActuation actuation_;
   std::string heading_frame_;
   double marker_period_;
+  double max_actuator_rate_;  ///< [rad/s] a measured rate beyond it is rejected (plausibility)
   ros::Time last_markers_;
   roller::DriveState last_state_;
   InputMonitor input_;

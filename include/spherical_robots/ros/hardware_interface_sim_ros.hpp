@@ -8,6 +8,7 @@
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/Bool.h>
 
+#include "spherical_robots/core/clock_jump.hpp"
 #include "spherical_robots/hardware/simulated_actuators.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 
@@ -18,7 +19,8 @@ class HardwareInterfaceSimRos {
  public:
   /// @param nh the stack's namespace: topics actuators/command, actuators/state, estop.
   /// @param pnh the node's private namespace: parameters actuator_names, max_velocity [rad/s],
-  ///        max_acceleration [rad/s^2], command_timeout [s], rate [Hz]; optional actuator models
+  ///        max_acceleration [rad/s^2], command_timeout [s], rate [Hz], max_clock_step [s] (5: a
+///        larger forward step of ROS time is a jump, not elapsed time); optional actuator models
   ///        models/<name>/{time_constant, dead_time, position_resolution, velocity_noise} and
   ///        noise_seed (docs/hardware_interface.md), all off by default.
   /// @throw std::invalid_argument on a missing or malformed parameter, naming it and its value.
@@ -28,6 +30,8 @@ class HardwareInterfaceSimRos {
   void commandCallback(const sensor_msgs::JointState::ConstPtr& msg);
   void eStopCallback(const std_msgs::Bool::ConstPtr& msg);
   void timerCallback(const ros::TimerEvent& event);
+  /// Rebases the actuators when ROS time jumped (a stray /clock, a replay looping back).
+  void followClock(const ros::Time& now);
   void publishState(const ros::Time& stamp);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
@@ -39,6 +43,7 @@ class HardwareInterfaceSimRos {
   ros::Timer timer_;
   /// Counts accepted and rejected commands and logs rejections; the watchdog is the actuators'.
   InputMonitor command_input_;
+  ClockJumpDetector clock_;
   diagnostic_updater::Updater updater_;
   bool reported_timeout_ = false;
 };

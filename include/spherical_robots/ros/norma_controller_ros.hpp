@@ -10,19 +10,26 @@
 #include <Eigen/Core>
 
 #include "spherical_robots/NormaState.h"
-#include "spherical_robots/norma/norma_controller.hpp"
+#include <sensor_msgs/JointState.h>
+
+#include "spherical_robots/norma/norma_control_loop.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 
 namespace spherical_robots {
 
 /// Parameters (private, ~): controller (paper | tracking, "paper"); input_timeout [s] (0.05);
-/// publish_rate [Hz] (50) of tracking_error and target. In the node handle's namespace:
-/// robot_description (urdf/norma.urdf).
-/// Subscribes norma_state; for each good one, with the path of eq 52 timed from the first state,
-/// publishes actuators/command (effort[] of pendulum_motor [N m] and slider_motor [N]). The PID
-/// integrals advance by the time between consecutive states. Publishes tracking_error, target,
-/// desired_path (latched, one period of eq 52) and /diagnostics. A bad state is rejected
-/// (nothing is commanded for it; the hardware's watchdog catches a silent controller).
+/// publish_rate [Hz] (50) of tracking_error and target; max_torque [N m] (20) and max_force [N]
+/// (200), the actuators' limits (as given to the hardware interface) for the anti-windup;
+/// max_stamp_skew [s] (1): a state stamped further from the clock, or at 0, is rejected. In the
+/// node handle's namespace: robot_description (urdf/norma.urdf).
+/// Subscribes norma_state; for each good one, the loop of norma::NormaControlLoop (path of eq 52
+/// timed from the first state, PID integrals advanced by the time between states, held while
+/// saturated or while the actuators apply nothing: e-stop, watchdog) publishes
+/// actuators/command (effort[] of pendulum_motor [N m] and slider_motor [N]). Subscribes
+/// actuators/state for the applied efforts. Publishes tracking_error, target,
+/// desired_path (latched, one period of eq 52) and /diagnostics. A bad state is rejected and
+/// changes nothing (nothing is commanded for it; the hardware's watchdog catches a silent
+/// controller).
 /// The loop is real time: nothing waits for the controller. /diagnostics reports how old each
 /// state is (in ROS time) when its command leaves, and warns about commands later than 2 ms —
 /// the paper's inner loop does not survive much more delay (docs/conventions.md).
@@ -33,20 +40,21 @@ class NormaControllerRos {
 
  private:
   void onState(const spherical_robots::NormaState& msg);
+  void onActuatorState(const sensor_msgs::JointState& msg);
+  const norma::NormaController& controller() const { return loop_.controller(); }
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   norma::NormaParameters parameters_;
-  norma::NormaController controller_;
+  norma::NormaControlLoop loop_;
   double publish_period_;
-  ros::Time path_start_;
-  ros::Time last_state_;
+  double max_stamp_skew_;
   ros::Time last_publish_;
-  Eigen::Vector3d integrals_ = Eigen::Vector3d::Zero();
   double max_state_age_ = 0.0;         ///< [s] since the last report: ROS time a state waited
   unsigned long late_commands_ = 0;    ///< commands sent more than kLateAge after their state
-  norma::ControlOutput last_output_;
   InputMonitor input_;
+  InputMonitor actuator_input_;
   ros::Subscriber state_sub_;
+  ros::Subscriber actuator_sub_;
   ros::Publisher command_pub_;
   ros::Publisher error_pub_;
   ros::Publisher target_pub_;

@@ -46,6 +46,7 @@ class NormaPlantRos {
   std::string base_frame_;
   double step_;
   PlantTimeline timeline_;
+  double max_actuator_effort_;  ///< [N m or N] a measured effort beyond it is rejected
   double publish_period_;
   Trail trail_;
   norma::NormaState state_;

@@ -1,13 +1,18 @@
 #pragma once
 // The time bookkeeping every plant node shares (terrain, Norma, rotor sphere, FreeBOT chain): the
 // first tick starts the scenario; each later tick advances the model by the ROS time elapsed since
-// the previous one, never backwards (a jump back in time holds the state); a model that throws
-// keeps its last good state and the failure is counted; after `duration` the scenario is complete.
+// the previous one, never backwards and never by a jump (a step back, or forward by more than
+// max_clock_step, holds the state: core/clock_jump.hpp); a model that throws (also when a step
+// would produce a non-finite state) keeps its last good state and the failure is counted; after
+// `duration` the scenario is complete.
 
 #include <diagnostic_updater/DiagnosticStatusWrapper.h>
+#include <ros/node_handle.h>
 #include <ros/time.h>
 
 #include <functional>
+
+#include "spherical_robots/core/clock_jump.hpp"
 
 namespace spherical_robots {
 
@@ -17,7 +22,11 @@ class SimClock;
 class PlantTimeline {
  public:
   /// @param duration [s] of ROS time after the first tick; 0 (or less): forever.
-  explicit PlantTimeline(double duration) : duration_(duration) {}
+  /// @param max_clock_step [s] > 0: a longer forward step of ROS time is a jump, not elapsed time.
+  PlantTimeline(double duration, double max_clock_step);
+  /// From the plant's private parameters duration [s] (0) and max_clock_step [s] (5).
+  /// @throw std::invalid_argument on a bad value, naming the parameter.
+  explicit PlantTimeline(const ros::NodeHandle& pnh);
 
   /// Calls advance(elapsed [s]) when ROS time moved forward since the previous tick (not on the
   /// first); logs a jump back, and an exception from advance, at most once a second.
@@ -29,12 +38,13 @@ class PlantTimeline {
   bool finished() const { return finished_; }
   double duration() const { return duration_; }
 
-  /// Adds "time since start [s]" and "integration failures", and raises ERROR if the model
+  /// Adds "time since start [s]", "clock jumps" and "integration failures", and raises ERROR if the model
   /// failed since the last report.
   void report(diagnostic_updater::DiagnosticStatusWrapper& status, const ros::Time& now);
 
  private:
   double duration_;
+  ClockJumpDetector clock_;
   ros::Time start_;
   ros::Time last_tick_;
   unsigned long failures_ = 0;

@@ -12,6 +12,7 @@
 
 #include "spherical_robots/TerrainState.h"
 #include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/core/clock_jump.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/terrain/pure_pursuit.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
@@ -21,7 +22,11 @@ namespace spherical_robots {
 
 /// Parameters (private, ~): robot_type (3R | 2R | RT | RS, "3R"); mode (tracking | teleop,
 /// "tracking"); path (circle | diamond, "circle"); rate [Hz] (50); input_timeout [s] (0.5): an
-/// older terrain_state or cmd_vel counts as absent and the command is zero.
+/// older terrain_state or cmd_vel counts as absent and the command is zero; plausibility bounds
+/// max_position [m] (1000) of terrain_state's points, max_cmd_vel [m/s, rad/s] (10) of each
+/// cmd_vel field, max_stamp_skew [s] (1) between a terrain_state's stamp and the clock (and a
+/// zero stamp) beyond which the message is rejected; max_clock_step [s] (5): a longer step of
+/// ROS time is a jump, over which the reference does not move.
 /// In the node handle's namespace: robot_description (URDF, for the radius) and terrain/...
 /// (config/terrain.yaml: surface, paths, gains).
 ///
@@ -69,6 +74,10 @@ class PurePursuitRos {
   terrain::TrackingError error_;
   unsigned long failures_ = 0;
   ros::Time start_;
+  double max_position_;
+  double max_cmd_vel_;
+  double max_stamp_skew_;
+  ClockJumpDetector clock_;
 
   InputMonitor input_;  ///< terrain_state (tracking) or cmd_vel (teleop)
   ros::Subscriber state_sub_;

@@ -49,6 +49,7 @@ class RotorPlantRos {
   std::string base_frame_;
   double step_;
   PlantTimeline timeline_;
+  double max_actuator_rate_;  ///< [rad/s] a measured rate beyond it is rejected (plausibility)
   double publish_period_;
   rotor::ContactCoordinates state_;
   rotor::RotorSpeeds speeds_;  ///< measured [rad/s]

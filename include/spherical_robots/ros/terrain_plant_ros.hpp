@@ -30,6 +30,9 @@ namespace spherical_robots {
 /// * duration [s] (0 = forever): at this much ROS time after the first step, log "scenario
 ///   complete" and shut the node down;
 /// * state_timeout [s] (0.5): older measured rates count as zero;
+/// * max_actuator_rate [rad/s] (1000, far above every stack's actuator limit): a measured rate
+///   beyond it is no measurement (1e300 is finite) and the message is rejected;
+/// * max_clock_step [s] (5): a longer forward step of ROS time is a jump (PlantTimeline);
 /// * initial_x, initial_y [m], initial_psi [rad] (0): the initial contact point and heading;
 /// * trail_period [s] (0.5): spacing of the driven trail's points;
 /// * marker_half_extent [m] (3), marker_resolution [m] (0.1): the terrain mesh [-e, e]^2.
@@ -64,6 +67,7 @@ class TerrainPlantRos {
   terrain::TerrainState state_;
   Eigen::Quaterniond orientation_;  ///< shell (base_link) orientation, world <- body
   terrain::DriveRates measured_;
+  double max_actuator_rate_;
 
   ros::Time last_publish_;
 
