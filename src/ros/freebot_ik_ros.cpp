@@ -41,6 +41,7 @@ FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       goal_orientation_tolerance_(positiveParam(pnh, "goal_orientation_tolerance", 1e-3)),
       max_replans_(countParam(pnh, "max_replans", 3, 0)),
       goal_timeout_(positiveParam(pnh, "goal_timeout", 120.0)),
+      max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
       last_drive_(chain_.moduleCount()),
       state_input_(nh.resolveName("freebot_state"), positiveParam(pnh, "input_timeout", 0.1)),
       goal_input_(nh.resolveName("goal"), 1e9),
@@ -74,6 +75,9 @@ FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 void FreebotIkRos::onState(const spherical_robots::FreebotState& msg) {
   const ros::Time now = msg.header.stamp;
   try {
+    // Goal timeouts count from these stamps: one far from the clock must not abort a goal.
+    const std::string stamp_problem = stampProblem(now, ros::Time::now(), max_stamp_skew_);
+    if (!stamp_problem.empty()) throw std::invalid_argument("freebot_state " + stamp_problem);
     freebot::ChainState state = conversions::chainStateFromMsg(msg);
     chain_.requireValid(state);
     state_ = std::move(state);

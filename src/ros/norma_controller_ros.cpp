@@ -103,10 +103,6 @@ void NormaControllerRos::onState(const spherical_robots::NormaState& msg) {
     // the clock first, so a state stamped in the future cannot move the path clock.
     const std::string stamp_problem = stampProblem(now, ros::Time::now(), max_stamp_skew_);
     if (!stamp_problem.empty()) throw std::invalid_argument("norma_state " + stamp_problem);
-    if (msg.q.size() != 4 || msg.qd.size() != 4)
-      throw std::invalid_argument("norma_state needs 4 q and 4 qd, got " +
-                                  std::to_string(msg.q.size()) + " and " +
-                                  std::to_string(msg.qd.size()));
     norma::NormaMeasurement state;
     state.q = norma::Vector4(msg.q[0], msg.q[1], msg.q[2], msg.q[3]);
     state.qd = norma::Vector4(msg.qd[0], msg.qd[1], msg.qd[2], msg.qd[3]);

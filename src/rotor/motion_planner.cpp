@@ -295,13 +295,14 @@ void requireRequest(const PlanRequest& request) {
     message << "inertia ratio k must be >= 0, got " << request.k;
     throw std::invalid_argument(message.str());
   }
-  if (request.steps < 1) {
-    throw std::invalid_argument("number of steps n must be >= 1, got " +
-                                std::to_string(request.steps));
+  if (request.steps < 1 || request.steps > kMaxSteps) {
+    throw std::invalid_argument("number of steps n must be in [1, " + std::to_string(kMaxSteps) +
+                                "], got " + std::to_string(request.steps));
   }
-  requireFinite(request.u_a, "target u_a [R]");
-  requireFinite(request.v_a, "target v_a [R]");
-  requireFinite(request.psi, "target psi [rad]");
+  requireMagnitudeAtMost(request.k, kMaxInertiaRatio, "inertia ratio k");
+  requireMagnitudeAtMost(request.u_a, kMaxTargetDistance, "target u_a [R]");
+  requireMagnitudeAtMost(request.v_a, kMaxTargetDistance, "target v_a [R]");
+  requireMagnitudeAtMost(request.psi, kMaxTargetHeading, "target psi [rad]");
   requirePositive(request.max_radius, "max radius [R]");
   if (request.max_radius >= kMaxCircleRadius) {
     std::ostringstream message;
@@ -310,8 +311,9 @@ void requireRequest(const PlanRequest& request) {
             << request.max_radius;
     throw std::invalid_argument(message.str());
   }
-  if (request.heading_turns < 0) {
-    throw std::invalid_argument("heading turns must be >= 0, got " +
+  if (request.heading_turns < 0 || request.heading_turns > kMaxHeadingTurns) {
+    throw std::invalid_argument("heading turns must be in [0, " +
+                                std::to_string(kMaxHeadingTurns) + "], got " +
                                 std::to_string(request.heading_turns));
   }
 }

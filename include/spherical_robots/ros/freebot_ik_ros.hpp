@@ -29,6 +29,7 @@ namespace spherical_robots {
 /// heading_tolerance [rad] (0.05), contact_tolerance [m] (2e-6), steering_distance [m] (1e-3):
 /// the drive (core DriveLimits); max_replans (3): IK again from the reached state when the
 /// contact points are reached but the pose is not (unequal radii); goal_timeout [s] (120);
+/// max_stamp_skew [s] (1): a freebot_state stamped further from the clock, or at 0, is rejected;
 /// input_timeout [s] (0.1) of freebot_state. In the node handle's namespace: the chain
 /// (freebotChainFromParams).
 /// Subscribes freebot_state and goal (geometry_msgs/PoseStamped in "world" or ""; an all-zero
@@ -75,6 +76,7 @@ class FreebotIkRos {
   double goal_orientation_tolerance_;
   int max_replans_;
   double goal_timeout_;
+  double max_stamp_skew_;  ///< [s] a freebot_state stamped further from the clock is rejected
   std::optional<freebot::ChainState> state_;
   std::optional<Goal> goal_;
   std::vector<freebot::ModuleDrive> last_drive_;

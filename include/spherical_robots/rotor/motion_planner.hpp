@@ -26,6 +26,15 @@ struct PlanRequest {
   int heading_turns = 0;   ///< also plan for ψ + 2πm, |m| <= heading_turns (>= 0)
 };
 
+/// Upper bounds of a request, so that no request can block a planner for seconds (one plan costs
+/// milliseconds per heading turn and step): n <= 20 steps, |m| <= 10 heading turns, k <= 100,
+/// |u_a|, |v_a| <= 1000 R, |ψ| <= 1000 rad.
+constexpr int kMaxSteps = 20;
+constexpr int kMaxHeadingTurns = 10;
+constexpr double kMaxInertiaRatio = 100.0;
+constexpr double kMaxTargetDistance = 1000.0;
+constexpr double kMaxTargetHeading = 1000.0;
+
 struct RotorPlan {
   double a = 0.0;            ///< first circle's Euclidean radius [R]
   double b = 0.0;            ///< second circle's Euclidean radius [R]
@@ -45,7 +54,7 @@ struct PlanResult {
 /// smaller than 0.01 R are not plans (they approach the null manoeuvre a = b = 0).
 /// Solutions whose final_error exceeds 1e-6 are dropped (and counted in the reason if none remain).
 /// @throw std::invalid_argument on a non-finite input, k < 0, steps < 1, max_radius outside
-///        (0, kMaxCircleRadius) or heading_turns < 0.
+///        (0, kMaxCircleRadius), heading_turns < 0, or a value beyond the bounds above.
 PlanResult planRotorMotion(const PlanRequest& request);
 
 }  // namespace spherical_robots::rotor
