@@ -229,6 +229,49 @@ class HardwareInterfaceSimCheck(unittest.TestCase):
                      'diagnostics to count the NaN commands')
         self.assertIn('non-finite', self.diagnostics()[1]['last rejection'])
 
+    def test_implausible_set_point_rejected_not_clamped(self):
+        """A set-point beyond 100 times its limit (1e300) is rejected as a whole; 100 times is
+        clamped."""
+        theta, phi = self.names[:2]
+        v = 0.25 * self.max_velocity
+        self.reach({theta: v})
+        start = rospy.get_time()
+        self.commandFor({theta: v}, 1.0, extra={theta: 1e300, phi: -v})
+        for state in self.statesSince(start):
+            self.assertAlmostEqual(self.velocity(state, theta), v, delta=EXACT,
+                                   msg='an implausible command moved theta')
+            self.assertEqual(self.velocity(state, phi), 0.0, 'a rejected command changed phi')
+        self.waitFor(lambda: 'beyond 100 times its limit' in self.diagnostics()[1]['last rejection'],
+                     5.0, 'diagnostics to name the implausible set-point')
+        key = theta + ' set-point, velocity [rad/s]'
+        self.commandFor({theta: -100.0 * self.max_velocity}, 0.3)
+        self.waitFor(lambda: float(self.diagnostics()[1][key].split(',')[0]) == -self.max_velocity,
+                     5.0, '-100 times the limit clamped to -max_velocity')
+
+    def test_rejection_burst_escalates_diagnostics_and_recovers(self):
+        """More than 20 rejected commands a second: ERROR naming the reason; 2 s of good
+        commands after the burst: OK again."""
+        theta = self.names[0]
+        self.reach({theta: 0.1 * self.max_velocity})
+        good, bad = {theta: 0.1 * self.max_velocity}, {theta: float('nan')}
+        seen = None  # the first ERROR status the burst brings
+        for k in range(int(2.5 * 100)):  # 100 commands a second, four in five of them NaN
+            self.command(good if k % 5 == 0 else bad)
+            status, values = self.diagnostics()
+            if seen is None and status.level == DiagnosticStatus.ERROR:
+                seen = status, values
+            time.sleep(0.01)
+        self.assertIsNotNone(seen, 'no ERROR on /diagnostics during 2.5 s of 80 NaN commands a '
+                             'second; last: %s' % self.diagnostics()[0].message)
+        status, values = seen
+        self.assertIn('bad messages on', status.message)
+        self.assertIn('non-finite', status.message)
+        self.assertGreater(float(values[rospy.resolve_name('actuators/command')
+                                        + ' rejected per second']), 20.0)
+        self.commandFor({theta: 0.1 * self.max_velocity}, 3.5)
+        self.waitFor(lambda: self.diagnostics()[0].level == DiagnosticStatus.OK, 5.0,
+                     'diagnostics back at OK after 2 s of good commands')
+
     def test_unknown_joint_rejected(self):
         theta = self.names[0]
         v = 0.25 * self.max_velocity

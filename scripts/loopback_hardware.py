@@ -10,19 +10,24 @@ depends on the simulated one.
 
 Private parameters, as hardware_interface_sim's: actuator_names (required), max_velocity [rad/s],
 max_acceleration [rad/s^2], effort_limits ({name: max effort}: those actuators take efforts),
-command_timeout [s], rate [Hz], diagnostic_period [s]; models_file
+command_timeout [s], rate [Hz], diagnostic_period [s], max_clock_step [s]; models_file
 must be empty (there are no actuator models here). A missing or
 malformed one is fatal at start-up (exit status 1, the message naming node and parameter).
 """
+import collections
 import math
 import sys
 import threading
+import time
 
 import diagnostic_updater
 import rospy
 from diagnostic_msgs.msg import DiagnosticStatus
 from sensor_msgs.msg import JointState
 from std_msgs.msg import Bool
+
+
+IMPLAUSIBLE_FACTOR = 100.0  # a set-point beyond this many times its limit is rejected
 
 
 class ParameterError(Exception):
@@ -77,6 +82,7 @@ class LoopbackHardware:
         self.max_acceleration = positive_parameter('max_acceleration', 50.0)
         self.effort_limits = effort_limits(self.names)
         self.timeout = positive_parameter('command_timeout', 0.5)
+        self.max_clock_step = positive_parameter('max_clock_step', 5.0)
         rate = positive_parameter('rate', 100.0)
         models_file = rospy.get_param('~models_file', '')
         if models_file:
@@ -98,6 +104,10 @@ class LoopbackHardware:
         self.accepted = 0
         self.rejected = 0
         self.last_rejection = 'none'
+        self.clock_jumps = 0
+        self.rejection_times = collections.deque()  # wall times of the last second's rejections
+        self.last_rejection_wall = None
+        self.accepted_since_rejection = False
 
         self.updater = diagnostic_updater.Updater()
         self.updater.setHardwareID('loopback')
@@ -111,6 +121,15 @@ class LoopbackHardware:
         """Moves every velocity towards its set-point at max_acceleration and integrates the
         positions (trapezoid) up to now; the watchdog zeroes the set-points at its deadline."""
         if self.last_update is None:
+            self.last_update = now
+            return
+        if now < self.last_update or now - self.last_update > self.max_clock_step:
+            # A jump of ROS time, not elapsed time: continue from `now`, the command's age kept.
+            if self.last_accepted is not None:
+                self.last_accepted += now - self.last_update
+            rospy.logwarn('loopback hardware: ROS time jumped from %.3f to %.3f s',
+                          self.last_update, now)
+            self.clock_jumps += 1
             self.last_update = now
             return
         if (self.last_accepted is not None and not self.timed_out
@@ -149,6 +168,10 @@ class LoopbackHardware:
                     len(msg.name), len(values), 'efforts' if kind == 'effort' else 'velocities')
             if not math.isfinite(values[k]):
                 return "non-finite %s %r for actuator '%s'" % (kind, values[k], name)
+            limit = self.effort_limits.get(name, self.max_velocity)
+            if abs(values[k]) > IMPLAUSIBLE_FACTOR * limit:
+                return "%s %g for actuator '%s' is beyond %g times its limit %g: not a set-point" \
+                    % (kind, values[k], name, IMPLAUSIBLE_FACTOR, limit)
         return None
 
     def setpoint_of(self, msg, k):
@@ -166,6 +189,10 @@ class LoopbackHardware:
             if reason is not None:
                 self.rejected += 1
                 self.last_rejection = reason
+                wall = time.time()
+                self.rejection_times.append(wall)
+                self.last_rejection_wall = wall
+                self.accepted_since_rejection = False
                 rospy.logerr_throttle(1.0, 'loopback hardware: command rejected: ' + reason)
                 return
             self.advance(now)
@@ -178,6 +205,7 @@ class LoopbackHardware:
                 if name in self.effort_limits:
                     self.efforts[i] = self.setpoints[i]
             self.accepted += 1
+            self.accepted_since_rejection = True
             self.last_accepted = now
             self.timed_out = False
 
@@ -211,6 +239,21 @@ class LoopbackHardware:
         state.header.stamp = rospy.Time.from_sec(now)
         self.state_pub.publish(state)
 
+    def escalate(self, status):
+        """ERROR above 20 rejections a second, WARN until good commands have been accepted for
+        2 s after the last rejection (docs/hardware_interface.md, /diagnostics)."""
+        wall = time.time()
+        while self.rejection_times and self.rejection_times[0] <= wall - 1.0:
+            self.rejection_times.popleft()
+        rate = float(len(self.rejection_times))
+        status.add(rospy.resolve_name('actuators/command') + ' rejected per second', str(rate))
+        if self.last_rejection_wall is None or (self.accepted_since_rejection
+                                                and wall - self.last_rejection_wall >= 2.0):
+            return
+        level = DiagnosticStatus.ERROR if rate > 20.0 else DiagnosticStatus.WARN
+        status.mergeSummary(level, 'bad messages on %s (%g/s, %d in all): %s' % (
+            rospy.resolve_name('actuators/command'), rate, self.rejected, self.last_rejection))
+
     def diagnose(self, status):
         with self.lock:
             if self.e_stopped:
@@ -221,7 +264,9 @@ class LoopbackHardware:
                 status.summary(DiagnosticStatus.OK, 'waiting for the first command')
             else:
                 status.summary(DiagnosticStatus.OK, 'following commands')
+            self.escalate(status)
             status.add('accepted commands', str(self.accepted))
+            status.add('clock jumps', str(self.clock_jumps))
             status.add('rejected commands', str(self.rejected))
             status.add('last rejection', self.last_rejection)
             status.add('command timeout [s]', str(self.timeout))

@@ -130,6 +130,7 @@ class RotorPlannerCheck(unittest.TestCase):
         deadline = time.time() + 20.0
         values = {}
         while time.time() < deadline:
+            msg.header.stamp = rospy.Time.now()  # a stamp near the clock: rejected for `reason`
             odom.publish(msg)
             with self.lock:
                 values = dict((v.key, v.value) for v in self.status.values) if self.status else {}
@@ -151,11 +152,11 @@ class RotorPlannerCheck(unittest.TestCase):
         self.wait_for_status(lambda s: 'execute 99 refused' in s.message, 'the refused execute')
         odom = rospy.Publisher('odom', Odometry, queue_size=10)
         unset = Odometry()  # an all-zero orientation: no attitude
-        self.publish_until_rejected(odom, unset, 'norm 1 within 1e-3')
+        self.publish_until_rejected(odom, unset, 'has norm 0, expected a unit quaternion')
         bad = Odometry()
         bad.pose.pose.position.x = float('nan')
         bad.pose.pose.orientation.w = 1.0
-        self.publish_until_rejected(odom, bad, 'must be finite, got nan')
+        self.publish_until_rejected(odom, bad, 'must be finite with magnitude <= 1000, got nan')
         # Still serving.
         self.assertTrue(self.request(2.5, 1, 0.0, self.radius, 0.0).success)
 

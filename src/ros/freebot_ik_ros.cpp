@@ -42,6 +42,7 @@ FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       max_replans_(countParam(pnh, "max_replans", 3, 0)),
       goal_timeout_(positiveParam(pnh, "goal_timeout", 120.0)),
       max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
+      max_goal_distance_(positiveParam(pnh, "max_goal_distance", 100.0)),
       last_drive_(chain_.moduleCount()),
       state_input_(nh.resolveName("freebot_state"), positiveParam(pnh, "input_timeout", 0.1)),
       goal_input_(nh.resolveName("goal"), 1e9),
@@ -139,7 +140,7 @@ void FreebotIkRos::onGoal(const geometry_msgs::PoseStamped& msg) {
     if (!msg.header.frame_id.empty() && msg.header.frame_id != kWorldFrame)
       throw std::invalid_argument("frame_id '" + msg.header.frame_id + "': expected '" +
                                   kWorldFrame + "' (or empty)");
-    goal.position = conversions::fromPoint(msg.pose.position, "pose.position");
+    goal.position = conversions::boundedPoint(msg.pose.position, "pose.position", max_goal_distance_);
     goal.mode = positionOnly(msg.pose.orientation) ? freebot::IkMode::PositionOnly
                                                    : freebot::IkMode::FullPose;
     goal.orientation = goal.mode == freebot::IkMode::PositionOnly

@@ -26,6 +26,8 @@ constexpr double kDefaultMaxRadius = 0.7;     // [R], the issue's default limit
 constexpr int kMarkerSamples = 400;
 const std::vector<std::string> kRotors = {"rotor_1", "rotor_2"};
 constexpr std::size_t kMaxDrivenPoses = 20000;
+// A plant's attitude is a unit quaternion up to its own round-off; farther from unit it is not one.
+constexpr double kOdomUnitTolerance = 1e-3;
 
 }  // namespace
 
@@ -33,6 +35,8 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : nh_(nh),
       radius_(positiveParam(pnh, "sphere_radius", kDefaultRadius)),
       max_radius_(positiveParam(pnh, "max_radius", kDefaultMaxRadius * radius_)),
+      max_position_(positiveParam(pnh, "max_position", 1e3)),
+      max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
       frame_id_(stringParam(pnh, "frame_id", "odom")),
       sphere_frame_(stringParam(pnh, "sphere_frame", "base_link")),
       samples_per_step_(static_cast<int>(positiveParam(pnh, "samples_per_step", 200))),
@@ -382,7 +386,12 @@ void RotorPlannerRos::onOdometry(const nav_msgs::Odometry& msg) {
   const geometry_msgs::Point& centre = msg.pose.pose.position;
   const geometry_msgs::Quaternion& q = msg.pose.pose.orientation;
   try {
-    const Eigen::Quaterniond attitude(q.w, q.x, q.y, q.z);
+    const std::string stamp_problem =
+        stampProblem(msg.header.stamp, ros::Time::now(), max_stamp_skew_);
+    if (!stamp_problem.empty()) throw std::invalid_argument("odom " + stamp_problem);
+    conversions::boundedPoint(centre, "odom pose.position", max_position_);
+    const Eigen::Quaterniond attitude =
+        conversions::fromQuaternion(q, "odom pose.orientation", kOdomUnitTolerance);
     const rotor::RestPose pose = rotor::measuredRestPose(centre.x, centre.y, radius_, attitude);
     contact_angles_ = rotor::measuredContactAngles(attitude);
     rest_pose_ = pose;
@@ -396,7 +405,7 @@ void RotorPlannerRos::onOdometry(const nav_msgs::Odometry& msg) {
   if (!execution_) return;
   if (driven_.due(msg.header.stamp)) {
     driven_.add(msg.header.stamp, {centre.x, centre.y, centre.z},
-                Eigen::Quaterniond(q.w, q.x, q.y, q.z).normalized());
+                conversions::fromQuaternion(q, "odom pose.orientation", kOdomUnitTolerance));
   }
 }
 

@@ -30,6 +30,7 @@ namespace spherical_robots {
 /// the drive (core DriveLimits); max_replans (3): IK again from the reached state when the
 /// contact points are reached but the pose is not (unequal radii); goal_timeout [s] (120);
 /// max_stamp_skew [s] (1): a freebot_state stamped further from the clock, or at 0, is rejected;
+/// max_goal_distance [m] (100): a goal coordinate beyond it is rejected (REJECTED), not planned;
 /// input_timeout [s] (0.1) of freebot_state. In the node handle's namespace: the chain
 /// (freebotChainFromParams).
 /// Subscribes freebot_state and goal (geometry_msgs/PoseStamped in "world" or ""; an all-zero
@@ -77,6 +78,7 @@ class FreebotIkRos {
   int max_replans_;
   double goal_timeout_;
   double max_stamp_skew_;  ///< [s] a freebot_state stamped further from the clock is rejected
+  double max_goal_distance_;  ///< [m] a goal coordinate beyond it is rejected, not UNREACHABLE
   std::optional<freebot::ChainState> state_;
   std::optional<Goal> goal_;
   std::vector<freebot::ModuleDrive> last_drive_;

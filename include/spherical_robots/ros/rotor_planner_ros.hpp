@@ -58,7 +58,10 @@ namespace spherical_robots {
 /// While executing and settling it appends odom to driven_path (nav_msgs/Path, every
 /// ~path_period [s] (0.05)); at the end it publishes the index on execution_done
 /// (std_msgs/UInt32, latched). A request while executing, before any plan, or with a bad index
-/// is refused with a warning. An odom that is not finite or upside down is ignored (logged) and
+/// is refused with a warning (a request beyond rotor::kMaxSteps, kMaxHeadingTurns, ... too).
+/// ~max_position [m] (1000) and ~max_stamp_skew [s] (1): an odom farther out, stamped farther
+/// from the clock or at 0, or with an orientation farther than 1e-3 from unit, is rejected.
+/// An odom that is not finite or upside down is ignored (logged) and
 /// the last good rest pose kept. /diagnostics ("rotor planner"): executing or idle, plan and
 /// correction counts, the last refused plan request or execution, the last end's miss, and the
 /// odom input (stale after ~odom_timeout [s] (0.5), rejected count and reason), at least once a
@@ -98,6 +101,8 @@ class RotorPlannerRos {
   ros::NodeHandle nh_;
   double radius_;
   double max_radius_;
+  double max_position_;    ///< [m] an odom position beyond it is rejected (plausibility)
+  double max_stamp_skew_;  ///< [s] an odom stamped further from the clock, or at 0, is rejected
   std::string frame_id_;
   std::string sphere_frame_;
   int samples_per_step_;
