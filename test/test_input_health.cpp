@@ -84,6 +84,9 @@ TEST(ClockJumpDetector, StepsAdvanceJumpsAreNamed) {
   EXPECT_EQ(clock.jumps(), 3u);
   EXPECT_EQ(clock.observe(std::numeric_limits<double>::quiet_NaN()), ClockStep::kHold);
   EXPECT_EQ(clock.latest(), 15.0299);
+  EXPECT_EQ(clock.jumpOver(15.04), 0.0);
+  EXPECT_NEAR(clock.jumpOver(1015.04), 1000.0, 1e-9);
+  EXPECT_NEAR(clock.jumpOver(15.05), -999.99, 1e-9);
   EXPECT_INVALID_ARGUMENT(sr::ClockJumpDetector(0.0), "max_clock_step");
 }
 

@@ -241,6 +241,17 @@ TEST(RotorPlanner, RejectsBadRequests) {
   EXPECT_INVALID_ARGUMENT(planRotorMotion({1.0, 1, 0, 1, 0, 0.72, 0}), "max radius", "0.72");
 }
 
+TEST(RotorPlanner, RequestsAreBoundedSoThatNoneBlocksThePlanner) {
+  // 20,000 heading turns blocked the planner for 9.4 s: refused at once, naming the bound.
+  EXPECT_INVALID_ARGUMENT(planRotorMotion({2.5, 1, 0, 1, 0, 0.7, 20000}), "heading turns", "10");
+  EXPECT_INVALID_ARGUMENT(planRotorMotion({2.5, 21, 0, 1, 0, 0.7, 0}), "steps", "20");
+  EXPECT_INVALID_ARGUMENT(planRotorMotion({1e300, 1, 0, 1, 0, 0.7, 0}), "inertia ratio k");
+  EXPECT_INVALID_ARGUMENT(planRotorMotion({2.5, 1, 1e300, 1, 0, 0.7, 0}), "u_a", "1000");
+  EXPECT_INVALID_ARGUMENT(planRotorMotion({2.5, 1, 0, 1, -2e3, 0.7, 0}), "psi");
+  // The bounds themselves are requests: a plan or a reason, not an exception.
+  EXPECT_NO_THROW(planRotorMotion({2.5, 1, 0, 1, 0, 0.7, kMaxHeadingTurns}));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {

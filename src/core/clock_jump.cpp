@@ -36,4 +36,10 @@ ClockStep ClockJumpDetector::observe(double t) {
   return step > 0.0 ? ClockStep::kJumpForward : ClockStep::kJumpBack;
 }
 
+double ClockJumpDetector::jumpOver(double t) {
+  const double previous = latest_;
+  const ClockStep step = observe(t);
+  return step == ClockStep::kJumpForward || step == ClockStep::kJumpBack ? t - previous : 0.0;
+}
+
 }  // namespace spherical_robots

@@ -1,5 +1,7 @@
 #include "spherical_robots/ros/freebot_ik_ros.hpp"
 
+#include "spherical_robots/ros/diagnostics_timer.hpp"
+
 #include <sensor_msgs/JointState.h>
 
 #include <cmath>
@@ -12,6 +14,11 @@
 
 namespace spherical_robots {
 namespace {
+
+// The errors of a verdict that measured nothing (REJECTED, PREEMPTED): -1, not NaN, which no
+// message of this package carries.
+constexpr double kNotMeasured = -1.0;
+
 
 const std::string kWorldFrame = "world";
 // Goals come from rviz (float32 quaternions) and from people typing 4-digit quaternions.
@@ -68,6 +75,7 @@ FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   solve_server_ = nh.advertiseService("solve_ik", &FreebotIkRos::onSolve, this);
   updater_.setHardwareID("FreeBOT");
   updater_.add("freebot ik", this, &FreebotIkRos::diagnose);
+  diagnostics_timer_ = startDiagnostics(nh, updater_);
   ROS_INFO_STREAM("FreeBOT IK: " << chain_.moduleCount() << " modules, reach "
                                  << chain_.manipulator().reach() << " m; goals on "
                                  << goal_input_.topic() << ", state on " << state_input_.topic());
@@ -120,7 +128,6 @@ void FreebotIkRos::onState(const spherical_robots::FreebotState& msg) {
     }
   }
   command_pub_.publish(conversions::jointStateFromWheelSpeeds(wheels, now));
-  updater_.update();
 }
 
 std::pair<double, double> FreebotIkRos::errorsTo(const Goal& goal) const {
@@ -150,13 +157,14 @@ void FreebotIkRos::onGoal(const geometry_msgs::PoseStamped& msg) {
     if (!state_) throw std::invalid_argument("no chain state on " + state_input_.topic() + " yet");
   } catch (const std::invalid_argument& e) {
     goal_input_.reject(e.what());
-    publishResult(goal, spherical_robots::FreebotGoalResult::REJECTED, NAN, NAN,
+    publishResult(goal, spherical_robots::FreebotGoalResult::REJECTED, kNotMeasured, kNotMeasured,
                   std::string("goal rejected: ") + e.what(), now);
     return;
   }
   goal_input_.accept(now);
   ++goals_;
-  if (goal_) publishResult(*goal_, spherical_robots::FreebotGoalResult::PREEMPTED, NAN, NAN,
+  if (goal_) publishResult(*goal_, spherical_robots::FreebotGoalResult::PREEMPTED, kNotMeasured,
+                           kNotMeasured,
                            "replaced by a newer goal", now);
   goal_.reset();
   target_pub_.publish(msg);
@@ -213,7 +221,13 @@ void FreebotIkRos::publishResult(const Goal& goal, std::uint8_t status, double p
   result.header.stamp = now;
   result.header.frame_id = kWorldFrame;
   result.status = status;
-  result.goal = goal.pose;
+  // A rejected goal may hold NaN or 1e300: nothing non-finite is published, so it is not echoed.
+  const geometry_msgs::Pose& pose = goal.pose;
+  const bool finite = std::isfinite(pose.position.x) && std::isfinite(pose.position.y) &&
+                      std::isfinite(pose.position.z) && std::isfinite(pose.orientation.x) &&
+                      std::isfinite(pose.orientation.y) && std::isfinite(pose.orientation.z) &&
+                      std::isfinite(pose.orientation.w);
+  if (finite) result.goal = pose;
   result.position_error = position_error;
   result.orientation_error = orientation_error;
   result.elapsed = goal.received.isZero() ? 0.0 : (now - goal.received).toSec();

@@ -1,5 +1,7 @@
 #include "spherical_robots/ros/freebot_plant_ros.hpp"
 
+#include "spherical_robots/ros/diagnostics_timer.hpp"
+
 #include <visualization_msgs/MarkerArray.h>
 
 #include <Eigen/Geometry>
@@ -72,6 +74,7 @@ FreebotPlantRos::FreebotPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   marker_pub_ = nh.advertise<visualization_msgs::MarkerArray>("freebot_markers", 10);
   updater_.setHardwareID("FreeBOT");
   updater_.add("freebot plant", this, &FreebotPlantRos::diagnose);
+  diagnostics_timer_ = startDiagnostics(nh, updater_);
 
   std::ostringstream radii;
   for (double r : chain_.manipulator().radii()) radii << (radii.tellp() > 0 ? ", " : "") << r;
@@ -85,7 +88,7 @@ FreebotPlantRos::FreebotPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 void FreebotPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
   try {
     wheels_ = conversions::wheelSpeedsFromJointState(msg, chain_.moduleCount(), max_actuator_rate_);
-    actuator_input_.accept(ros::Time::now());
+    actuator_input_.accept(clock_ ? clock_->now() : ros::Time::now());
   } catch (const std::invalid_argument& e) {
     actuator_input_.reject(e.what());
   }
@@ -111,7 +114,6 @@ void FreebotPlantRos::tick(const ros::Time& now) {
   state_pub_.publish(conversions::toFreebotStateMsg(state_, end, kWorldFrame, now));
   if (trail_.due(now)) trail_.add(now, end.position, end.orientation);
   if (periodDue(last_publish_, now, publish_period_)) publishFrames(now);
-  updater_.update();
 
   if (timeline_.complete(now)) {
     ROS_INFO_STREAM("scenario complete after " << timeline_.duration() << " s");

@@ -1,5 +1,7 @@
 #include "spherical_robots/ros/friction_drive_ros.hpp"
 
+#include "spherical_robots/ros/diagnostics_timer.hpp"
+
 #include <geometry_msgs/Point.h>
 #include <visualization_msgs/MarkerArray.h>
 
@@ -18,7 +20,6 @@ namespace {
 
 const std::vector<std::string> kMotorNames(config::kRollerActuatorNames.begin(),
                                            config::kRollerActuatorNames.end());
-constexpr double kDiagnosticsPeriod = 0.5;  // [s] how often the updater is offered a report
 constexpr double kRollerWidth = 0.02;       // [m] of the roller markers
 constexpr double kSlipArrowScale = 1.0;     // [m per m/s] of the slip arrows
 
@@ -61,8 +62,7 @@ FrictionDriveControllerRos::FrictionDriveControllerRos(ros::NodeHandle nh, ros::
   command_sub_ = nh.subscribe("drive/command", 10, &FrictionDriveControllerRos::onDriveCommand, this);
   updater_.setHardwareID("friction drive");
   updater_.add("friction drive inverse", this, &FrictionDriveControllerRos::diagnose);
-  diagnostics_timer_ = nh.createTimer(ros::Duration(kDiagnosticsPeriod),
-                                      [this](const ros::TimerEvent&) { updater_.update(); });
+  diagnostics_timer_ = startDiagnostics(nh, updater_);
   ROS_INFO_STREAM("Friction drive inverse: " << input_.topic() << " (2R rates) -> "
                                              << command_pub_.getTopic() << " (roller motors)");
 }
@@ -101,8 +101,7 @@ FrictionDriveSimRos::FrictionDriveSimRos(ros::NodeHandle nh, ros::NodeHandle pnh
   state_sub_ = nh.subscribe("actuators/state", 10, &FrictionDriveSimRos::onActuatorState, this);
   updater_.setHardwareID("friction drive");
   updater_.add("friction drive forward", this, &FrictionDriveSimRos::diagnose);
-  diagnostics_timer_ = nh.createTimer(ros::Duration(kDiagnosticsPeriod),
-                                      [this](const ros::TimerEvent&) { updater_.update(); });
+  diagnostics_timer_ = startDiagnostics(nh, updater_);
   ROS_INFO_STREAM("Friction drive forward: " << input_.topic() << " (roller motors) -> "
                                              << drive_state_pub_.getTopic() << " (2R rates)");
 }

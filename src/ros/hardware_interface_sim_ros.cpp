@@ -1,5 +1,7 @@
 #include "spherical_robots/ros/hardware_interface_sim_ros.hpp"
 
+#include "spherical_robots/ros/diagnostics_timer.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <map>
@@ -192,6 +194,7 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
 
   updater_.setHardwareID("simulated");
   updater_.add("actuators", this, &HardwareInterfaceSimRos::diagnose);
+  diagnostics_timer_ = startDiagnostics(nh, updater_);
 
   state_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/state", 10);
   command_sub_ =
@@ -259,7 +262,6 @@ void HardwareInterfaceSimRos::timerCallback(const ros::TimerEvent&) {
     reported_timeout_ = true;
   }
   publishState(now);
-  updater_.update();
 }
 
 void HardwareInterfaceSimRos::followClock(const ros::Time& now) {

@@ -1,5 +1,7 @@
 #include "spherical_robots/ros/norma_controller_ros.hpp"
 
+#include "spherical_robots/ros/diagnostics_timer.hpp"
+
 #include <geometry_msgs/PointStamped.h>
 #include <nav_msgs/Path.h>
 #include <sensor_msgs/JointState.h>
@@ -76,6 +78,7 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   actuator_sub_ = nh.subscribe("actuators/state", 10, &NormaControllerRos::onActuatorState, this);
   updater_.setHardwareID("Norma");
   updater_.add("norma controller", this, &NormaControllerRos::diagnose);
+  diagnostics_timer_ = startDiagnostics(nh, updater_);
   ROS_INFO_STREAM("Norma controller: "
                   << (controller().kind() == norma::ControllerKind::kPaper
                           ? "paper (eqs 48-51, Table 1)"
@@ -148,7 +151,6 @@ void NormaControllerRos::onState(const spherical_robots::NormaState& msg) {
     target.point = error.desired;
     target_pub_.publish(target);
   }
-  updater_.update();
 }
 
 void NormaControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

@@ -1,5 +1,7 @@
 #include "spherical_robots/ros/norma_plant_ros.hpp"
 
+#include "spherical_robots/ros/diagnostics_timer.hpp"
+
 #include <nav_msgs/Odometry.h>
 
 #include <Eigen/Geometry>
@@ -55,6 +57,7 @@ NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 
   updater_.setHardwareID("Norma");
   updater_.add("norma plant", this, &NormaPlantRos::diagnose);
+  diagnostics_timer_ = startDiagnostics(nh, updater_);
 
   const auto& p = dynamics_.parameters();
   ROS_INFO_STREAM("Norma: R = " << p.R << " m, L = " << p.L << " m, L0 = " << p.L0
@@ -71,7 +74,7 @@ void NormaPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
     const std::vector<double> efforts = conversions::effortsByName(msg, kActuators, max_actuator_effort_);
     torque_ = efforts[0];
     force_ = efforts[1];
-    actuator_input_.accept(ros::Time::now());
+    actuator_input_.accept(clock_ ? clock_->now() : ros::Time::now());
   } catch (const std::invalid_argument& e) {
     actuator_input_.reject(e.what());
   }
@@ -86,7 +89,6 @@ void NormaPlantRos::tick(const ros::Time& now) {
   });
   publishState(now);
   if (periodDue(last_publish_, now, publish_period_)) publishPose(now);
-  updater_.update();
 
   if (timeline_.complete(now)) {
     ROS_INFO_STREAM("scenario complete after " << timeline_.duration() << " s, centre at ("

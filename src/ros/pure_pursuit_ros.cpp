@@ -1,9 +1,12 @@
 #include "spherical_robots/ros/pure_pursuit_ros.hpp"
 
+#include "spherical_robots/ros/diagnostics_timer.hpp"
+
 #include <geometry_msgs/PointStamped.h>
 #include <nav_msgs/Path.h>
 #include <sensor_msgs/JointState.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -65,6 +68,7 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 
   updater_.setHardwareID(terrain::toString(type_) + " sphere");
   updater_.add("pure pursuit controller", this, &PurePursuitRos::diagnose);
+  diagnostics_timer_ = startDiagnostics(nh, updater_);
   timer_ = nh.createTimer(ros::Duration(1.0 / positiveParam(pnh, "rate", 50.0)),
                           &PurePursuitRos::onTimer, this);
 }
@@ -115,13 +119,11 @@ void PurePursuitRos::warnIgnoredOnce(const std::vector<std::string>& fields) {
 
 void PurePursuitRos::onTimer(const ros::TimerEvent&) {
   const ros::Time now = ros::Time::now();
-  const double previous = clock_.latest();
-  const ClockStep step = clock_.observe(now.toSec());
-  if ((step == ClockStep::kJumpForward || step == ClockStep::kJumpBack) && !start_.isZero()) {
+  if (const double jump = clock_.jumpOver(now.toSec()); jump != 0.0 && !start_.isZero()) {
     // The reference goes on from where it was, not from where the jump would put it.
-    start_ += ros::Duration(now.toSec() - previous);
-    ROS_WARN_STREAM("ROS time jumped from " << previous << " to " << now.toSec()
-                                            << " s; the reference continues where it was");
+    start_ = ros::Time(std::max(0.0, start_.toSec() + jump));  // ros::Time cannot go below 0
+    ROS_WARN_STREAM("ROS time jumped by " << jump << " s to " << now.toSec()
+                                          << " s; the reference continues where it was");
   }
   try {
     command_ = mode_ == Mode::Tracking ? track(now) : teleop(now);
@@ -133,7 +135,6 @@ void PurePursuitRos::onTimer(const ros::TimerEvent&) {
                                                                 << e.what());
   }
   command_pub_.publish(conversions::jointStateFromRates(type_, command_, now));
-  updater_.update();
 }
 
 terrain::DriveRates PurePursuitRos::track(const ros::Time& now) {

@@ -1,5 +1,7 @@
 #include "spherical_robots/ros/rotor_planner_ros.hpp"
 
+#include "spherical_robots/ros/diagnostics_timer.hpp"
+
 #include <nav_msgs/Path.h>
 #include <visualization_msgs/Marker.h>
 
@@ -37,6 +39,7 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       max_radius_(positiveParam(pnh, "max_radius", kDefaultMaxRadius * radius_)),
       max_position_(positiveParam(pnh, "max_position", 1e3)),
       max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
+      clock_(positiveParam(pnh, "max_clock_step", 5.0)),
       frame_id_(stringParam(pnh, "frame_id", "odom")),
       sphere_frame_(stringParam(pnh, "sphere_frame", "base_link")),
       samples_per_step_(static_cast<int>(positiveParam(pnh, "samples_per_step", 200))),
@@ -83,8 +86,7 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
                                    this, false, false);
   // The updater publishes only when called: a wall timer keeps /diagnostics going (and the odom
   // input's staleness visible) when no odom arrives.
-  diagnostics_timer_ = nh.createWallTimer(ros::WallDuration(1.0),
-                                          [this](const ros::WallTimerEvent&) { updater_.update(); });
+  diagnostics_timer_ = startDiagnostics(nh, updater_);
   updater_.setHardwareID("rotor sphere");
   updater_.add("rotor planner", this, &RotorPlannerRos::diagnose);
   ROS_INFO_STREAM("rotor_planner: R = " << radius_ << " m, circle radii up to " << max_radius_
@@ -358,8 +360,15 @@ void RotorPlannerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat
 }
 
 void RotorPlannerRos::onCommandTimer(const ros::TimerEvent&) {
-  if (!execution_) return;
   const ros::Time now = ros::Time::now();
+  const double jump = clock_.jumpOver(now.toSec());
+  if (!execution_) return;
+  if (jump != 0.0) {
+    // The schedule goes on from where it was, not from where the jump would put it.
+    execution_->start = ros::Time(std::max(0.0, execution_->start.toSec() + jump));
+    ROS_WARN_STREAM("rotor_planner: ROS time jumped by " << jump << " s to " << now.toSec()
+                                                         << " s; the manoeuvre continues");
+  }
   const double t = (now - execution_->start).toSec();
   const double end = execution_->duration;
   if (t <= end + command_period_) {
@@ -397,11 +406,9 @@ void RotorPlannerRos::onOdometry(const nav_msgs::Odometry& msg) {
     rest_pose_ = pose;
   } catch (const std::invalid_argument& error) {
     odom_input_.reject(error.what());  // logged; the last good rest pose stays
-    updater_.update();
     return;
   }
   odom_input_.accept(ros::Time::now());
-  updater_.update();
   if (!execution_) return;
   if (driven_.due(msg.header.stamp)) {
     driven_.add(msg.header.stamp, {centre.x, centre.y, centre.z},

@@ -1,5 +1,7 @@
 #include "spherical_robots/ros/rotor_plant_ros.hpp"
 
+#include "spherical_robots/ros/diagnostics_timer.hpp"
+
 #include <nav_msgs/Odometry.h>
 
 #include <Eigen/Geometry>
@@ -35,6 +37,7 @@ RotorPlantRos::RotorPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   joint_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
   updater_.setHardwareID("rotor sphere");
   updater_.add("rotor sphere plant", this, &RotorPlantRos::diagnose);
+  diagnostics_timer_ = startDiagnostics(nh, updater_);
   ROS_INFO_STREAM("rotor sphere: R = " << radius_ << " m, k = " << k_ << ", J_zz/J_r = "
                                        << inertia_scale_ << "; step " << step_ << " s");
   clock_ = makePlantClock(nh, pnh, step_, 1.0, [this](const ros::Time& now) { tick(now); },
@@ -54,7 +57,7 @@ void RotorPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
         }
       }
     }
-    actuator_input_.accept(ros::Time::now());
+    actuator_input_.accept(clock_ ? clock_->now() : ros::Time::now());
   } catch (const std::invalid_argument& e) {
     actuator_input_.reject(e.what());
   }
@@ -73,7 +76,6 @@ void RotorPlantRos::tick(const ros::Time& now) {
     state_ = next;
   });
   if (periodDue(last_publish_, now, publish_period_)) publishPose(now);
-  updater_.update();
 
   if (timeline_.complete(now)) {
     ROS_INFO_STREAM("scenario complete after " << timeline_.duration() << " s, centre at ("

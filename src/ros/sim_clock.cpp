@@ -74,6 +74,8 @@ bool SimClock::hasStarted() {
   return true;
 }
 
+ros::Time SimClock::now() const { return ownsClock() ? now_ : ros::Time::now(); }
+
 double SimClock::realTimeFactor() const {
   const double wall = (ros::WallTime::now() - first_tick_wall_).toSec();
   if (first_tick_.isZero() || !(wall > 0.0)) return std::numeric_limits<double>::quiet_NaN();

@@ -1,5 +1,7 @@
 #include "spherical_robots/ros/terrain_plant_ros.hpp"
 
+#include "spherical_robots/ros/diagnostics_timer.hpp"
+
 #include <nav_msgs/Odometry.h>
 #include <visualization_msgs/Marker.h>
 
@@ -54,6 +56,7 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 
   updater_.setHardwareID(terrain::toString(type_) + " sphere");
   updater_.add("terrain plant", this, &TerrainPlantRos::diagnose);
+  diagnostics_timer_ = startDiagnostics(nh, updater_);
 
   ROS_INFO_STREAM(terrain::toString(type_) << " sphere, R = " << radius << " m, "
                                            << terrain::toString(model) << " contact model, on "
@@ -66,7 +69,7 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 void TerrainPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
   try {
     measured_ = conversions::ratesFromJointState(type_, msg, max_actuator_rate_);
-    actuator_input_.accept(ros::Time::now());
+    actuator_input_.accept(clock_ ? clock_->now() : ros::Time::now());
   } catch (const std::invalid_argument& e) {
     actuator_input_.reject(e.what());
   }
@@ -83,7 +86,6 @@ void TerrainPlantRos::tick(const ros::Time& now) {
     const terrain::ContactGeometry geometry = kinematics_->geometry(state_);
     trail_.add(now, geometry.contact_point, Eigen::Quaterniond(geometry.heading_frame));
   }
-  updater_.update();
 
   if (timeline_.complete(now)) {
     ROS_INFO_STREAM("scenario complete after " << timeline_.duration()

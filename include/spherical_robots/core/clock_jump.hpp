@@ -25,6 +25,9 @@ class ClockJumpDetector {
   /// Classifies t [s] against the previous reading and makes it the latest. A non-finite t is
   /// ignored and classified kHold.
   ClockStep observe(double t);
+  /// observe(t), and the size of the jump [s] (t minus the previous reading) if it was one, else
+  /// 0: what a schedule timed from the clock shifts its start by to go on where it was.
+  double jumpOver(double t);
 
   bool started() const { return started_; }
   double latest() const { return latest_; }  ///< [s]; 0 before the first reading

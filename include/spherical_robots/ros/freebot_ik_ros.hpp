@@ -95,6 +95,7 @@ class FreebotIkRos {
   ros::Publisher target_pub_;
   ros::ServiceServer solve_server_;
   diagnostic_updater::Updater updater_;
+  ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
 };
 
 }  // namespace spherical_robots

@@ -42,7 +42,7 @@ class FrictionDriveControllerRos {
   ros::Subscriber command_sub_;
   ros::Publisher command_pub_;
   diagnostic_updater::Updater updater_;
-  ros::Timer diagnostics_timer_;
+  ros::WallTimer diagnostics_timer_;
 };
 
 /// Parameters: as FrictionDriveControllerRos, plus ~frame_prefix ("") and ~marker_rate [Hz] (20).
@@ -72,7 +72,7 @@ class FrictionDriveSimRos {
   ros::Publisher drive_pub_;
   ros::Publisher marker_pub_;
   diagnostic_updater::Updater updater_;
-  ros::Timer diagnostics_timer_;
+  ros::WallTimer diagnostics_timer_;
 };
 
 }  // namespace spherical_robots

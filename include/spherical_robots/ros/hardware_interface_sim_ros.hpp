@@ -45,6 +45,7 @@ class HardwareInterfaceSimRos {
   InputMonitor command_input_;
   ClockJumpDetector clock_;
   diagnostic_updater::Updater updater_;
+  ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
   bool reported_timeout_ = false;
 };
 

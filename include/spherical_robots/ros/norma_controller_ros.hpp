@@ -60,6 +60,7 @@ class NormaControllerRos {
   ros::Publisher target_pub_;
   ros::Publisher desired_path_pub_;
   diagnostic_updater::Updater updater_;
+  ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
 };
 
 }  // namespace spherical_robots

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "spherical_robots/PlanRotorMotion.h"
+#include "spherical_robots/core/clock_jump.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/trail.hpp"
 #include "spherical_robots/rotor/figure_eight.hpp"
@@ -103,6 +104,7 @@ class RotorPlannerRos {
   double max_radius_;
   double max_position_;    ///< [m] an odom position beyond it is rejected (plausibility)
   double max_stamp_skew_;  ///< [s] an odom stamped further from the clock, or at 0, is rejected
+  ClockJumpDetector clock_;  ///< ~max_clock_step [s] (5): over a jump the manoeuvre goes on
   std::string frame_id_;
   std::string sphere_frame_;
   int samples_per_step_;

@@ -61,6 +61,7 @@ class RotorPlantRos {
   ros::Publisher joint_pub_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   diagnostic_updater::Updater updater_;
+  ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
   std::unique_ptr<SimClock> clock_;  ///< last: it ticks only once everything else exists
 };
 

@@ -37,6 +37,9 @@ class SimClock {
            Ready ready = [] { return true; }, double ready_timeout = 0.0);
 
   bool ownsClock() const { return speedup_ > 0.0; }
+  /// The time of the latest tick when it owns the clock (a stray /clock message, which moves
+  /// ros::Time::now() of every node, cannot move it), else ros::Time::now().
+  ros::Time now() const;
   /// ROS seconds per wall second since the first tick [-]; NaN before the second tick.
   double realTimeFactor() const;
 
