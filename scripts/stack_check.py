@@ -113,6 +113,11 @@ class StackFixture(unittest.TestCase):
         """How many messages on topic the node whose status ends with status_suffix rejected."""
         return int(self.diagnostic_value(status_suffix, rospy.resolve_name(topic) + ' rejected') or 0)
 
+    def last_rejection(self, status_suffix, topic):
+        """The reason the node gave for its last rejected message on topic ('' before one)."""
+        return self.diagnostic_value(status_suffix, rospy.resolve_name(topic) + ' last rejection') \
+            or ''
+
     def check_rejected_actuator_state(self):
         """A NaN and an incomplete actuators/state are ignored, counted, and kill nothing."""
         publisher = rospy.Publisher('actuators/state', JointState, queue_size=10)
@@ -248,6 +253,22 @@ class TeleopCheck(StackFixture):
                       'the controller to report a rejected cmd_vel on /diagnostics')
         self.assert_nodes_alive()
         self.check_rejected_actuator_state()
+
+    def test_03_implausible_cmd_vel_moves_nothing(self):
+        """1e300 m/s is finite but no person's command: rejected, not clamped (it drove the robot
+        about 40 m at its limits). The robot is at rest (stale cmd_vel) and stays there."""
+        wait_until(lambda: self.states.count() > 0, 'the first terrain_state message')
+        sim_sleep(1.0)
+        x0, y0 = self.contact_point()
+        publisher = rospy.Publisher('cmd_vel', Twist, queue_size=100)
+        publish_until(publisher, [Twist(linear=Vector3(x=1e300)), Twist(angular=Vector3(z=-1e300)),
+                                  Twist(linear=Vector3(y=11.0))],
+                      lambda: 'magnitude <= 10' in self.last_rejection(CONTROLLER_STATUS, 'cmd_vel'),
+                      'the controller to reject the implausible cmd_vel')
+        sim_sleep(2.0)
+        x1, y1 = self.contact_point()
+        self.assertLess(math.dist((x0, y0), (x1, y1)), 1e-3,
+                        'an implausible cmd_vel moved the robot %.3f m' % math.dist((x0, y0), (x1, y1)))
 
 
 class SeamCheck(StackFixture):
