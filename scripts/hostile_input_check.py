@@ -357,6 +357,15 @@ class HostileInput(unittest.TestCase):
             time.sleep(1.0 / RATE)
         return k
 
+    def run_cases(self, publisher, cases):
+        """A burst of each (label, message) case, then the checks after it."""
+        for label, msg in cases:
+            sent = self.burst_of(publisher, [msg])
+            rospy.loginfo('%s: %d messages', label, sent)
+            self.assert_nothing_died_or_went_non_finite(label)
+            self.assert_tracks_again(label)
+        publisher.unregister()
+
     def assert_tracks_again(self, what):
         """The tracking error is below the bound within self.recovery s of simulated time."""
         if not self.spec['tracking']:
@@ -397,13 +406,8 @@ class HostileInput(unittest.TestCase):
         for topic, names, field in self.spec['joint_topics']:
             publisher = rospy.Publisher(topic, JointState, queue_size=1000)
             wait_until(lambda: publisher.get_num_connections() > 1, 'subscribers of ' + topic, 20.0)
-            for label, msg in joint_state_cases(names, field):
-                what = '%s on %s' % (label, topic)
-                sent = self.burst_of(publisher, [msg])
-                rospy.loginfo('%s: %d messages', what, sent)
-                self.assert_nothing_died_or_went_non_finite(what)
-                self.assert_tracks_again(what)
-            publisher.unregister()
+            self.run_cases(publisher, [('%s on %s' % (label, topic), msg)
+                                       for label, msg in joint_state_cases(names, field)])
 
     def test_2_state_inputs(self):
         """Bad state messages into the controller; then the stamped copies of a good one."""
@@ -416,12 +420,7 @@ class HostileInput(unittest.TestCase):
             # The stack's own publisher and this node's subscriber, or (goal) the IK alone.
             wait_until(lambda: publisher.get_num_connections() >= (2 if needs_last else 1),
                        'subscribers of ' + topic, 20.0)
-            for label, msg in cases(self.last_state.get(topic)):
-                sent = self.burst_of(publisher, [msg])
-                rospy.loginfo('%s: %d messages', label, sent)
-                self.assert_nothing_died_or_went_non_finite(label)
-                self.assert_tracks_again(label)
-            publisher.unregister()
+            self.run_cases(publisher, cases(self.last_state.get(topic)))
 
     def test_3_stray_clock(self):
         """One /clock 1,000 s ahead: a jump, not 1,000 s of elapsed time or a frozen clock."""

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -60,34 +61,43 @@ geometry_msgs::Quaternion toQuaternion(const Eigen::Quaterniond& q) {
   return msg;
 }
 
+namespace {
+
+/// (x, y, z), each finite and, unless max_magnitude is infinite, of magnitude <= max_magnitude.
+/// @throw std::invalid_argument naming `field`.x, .y or .z.
+Eigen::Vector3d checkedXyz(double x, double y, double z, const std::string& field,
+                           double max_magnitude) {
+  const double values[3] = {x, y, z};
+  const char* const axes[3] = {".x", ".y", ".z"};
+  for (int i = 0; i < 3; ++i) {
+    if (std::isinf(max_magnitude))
+      requireFinite(values[i], field + axes[i]);
+    else
+      requireMagnitudeAtMost(values[i], max_magnitude, field + axes[i]);
+  }
+  return {x, y, z};
+}
+
+constexpr double kAnyFinite = std::numeric_limits<double>::infinity();
+
+}  // namespace
+
 Eigen::Vector3d fromPoint(const geometry_msgs::Point& p, const std::string& field) {
-  requireFinite(p.x, field + ".x");
-  requireFinite(p.y, field + ".y");
-  requireFinite(p.z, field + ".z");
-  return {p.x, p.y, p.z};
+  return checkedXyz(p.x, p.y, p.z, field, kAnyFinite);
 }
 
 Eigen::Vector3d boundedPoint(const geometry_msgs::Point& p, const std::string& field,
                              double max_magnitude) {
-  requireMagnitudeAtMost(p.x, max_magnitude, field + ".x");
-  requireMagnitudeAtMost(p.y, max_magnitude, field + ".y");
-  requireMagnitudeAtMost(p.z, max_magnitude, field + ".z");
-  return {p.x, p.y, p.z};
+  return checkedXyz(p.x, p.y, p.z, field, max_magnitude);
 }
 
 Eigen::Vector3d boundedVector3(const geometry_msgs::Vector3& v, const std::string& field,
                                double max_magnitude) {
-  requireMagnitudeAtMost(v.x, max_magnitude, field + ".x");
-  requireMagnitudeAtMost(v.y, max_magnitude, field + ".y");
-  requireMagnitudeAtMost(v.z, max_magnitude, field + ".z");
-  return {v.x, v.y, v.z};
+  return checkedXyz(v.x, v.y, v.z, field, max_magnitude);
 }
 
 Eigen::Vector3d fromVector3(const geometry_msgs::Vector3& v, const std::string& field) {
-  requireFinite(v.x, field + ".x");
-  requireFinite(v.y, field + ".y");
-  requireFinite(v.z, field + ".z");
-  return {v.x, v.y, v.z};
+  return checkedXyz(v.x, v.y, v.z, field, kAnyFinite);
 }
 
 geometry_msgs::TransformStamped toTransform(const Eigen::Vector3d& translation,
