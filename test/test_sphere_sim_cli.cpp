@@ -213,6 +213,40 @@ TEST_F(SphereSimTest, InvalidInputExitsFourWithOneLineAndNoOutput) {
   }
 }
 
+TEST_F(SphereSimTest, ImplausibleNumbersOfEverySubcommandAreInvalidInput) {
+  // Finite but far outside any physical range: each was taken as a number and then hung
+  // (rotor-step), crashed (norma: exit 1), overflowed into a NaN message (roller) or an answer
+  // (freebot-ik "position error 0 m", freebot-wheels 7.6e301 rad/s).
+  const std::string source = SPHERICAL_ROBOTS_SOURCE_DIR;
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"norma", "--config", source, "--duration", "1e300"}, "samples"},
+      {{"norma", "--config", source, "--log-rate", "1e300"}, "samples"},
+      {{"rotor-step", "--k", "1e300", "--a", "0.3", "--b", "0.3", "--gamma", "0.9"},
+       "inertia ratio k"},
+      {{"rotor-plan", "--k", "2.5", "--steps", "1000000", "--target", "0,1,0"}, "steps"},
+      {{"freebot-ik", "--radii", "0.034,0.034,0.034,0.034", "--target", "1e300,0,0",
+        "--position-only"},
+       "target x"},
+      {{"freebot-fk", "--radii", "1e300,0.034,0.034,0.034", "--joints", "0.1,0.2;0.3,-0.1;0,0.4"},
+       "radius"},
+      {{"freebot-wheels", "--wheel-radius", "0.01", "--wheel-interval", "0.03", "--shell-radii",
+        "0.03,0.034", "--trolley", "1e300,0.5"},
+       "u_f"},
+      {{"roller", "--r", "1e300", "--contacts", "215,60,325,60", "--alpha-deg", "10,-10",
+        "--speed", "1", "--direction-deg", "90"},
+       "sphere radius r"},
+  };
+  for (const auto& [args, culprit] : cases) {
+    std::vector<std::string> full = args;
+    full.insert(full.begin() + 1, {"--out", out_.string()});
+    const Process process = run(full);
+    EXPECT_EQ(process.status, cli::kInvalidInput) << args.front() << ": " << process.err;
+    EXPECT_NE(process.err.find(culprit), std::string::npos) << process.err;
+    EXPECT_EQ(std::count(process.err.begin(), process.err.end(), '\n'), 1) << process.err;
+    expectNoOutputFiles();
+  }
+}
+
 TEST_F(SphereSimTest, RadiusBreakingSinglePointContactIsInvalidInput) {
   // Eq 59's valleys have curvature a w^2 = 0.8 1/m, so a 2 m sphere touches them at two points.
   const fs::path config = dir_ / "share";

@@ -118,9 +118,9 @@ IkResult solveIk(const SrcManipulator& manipulator, const Eigen::Vector3d& targe
                  const Eigen::Quaterniond& target_orientation,
                  const std::vector<SrcJointState>& seed, const IkOptions& options) {
   requireValidOptions(options);
-  requireFinite(target_position.x(), "target x [m]");
-  requireFinite(target_position.y(), "target y [m]");
-  requireFinite(target_position.z(), "target z [m]");
+  requireMagnitudeAtMost(target_position.x(), kMaxLength, "target x [m]");
+  requireMagnitudeAtMost(target_position.y(), kMaxLength, "target y [m]");
+  requireMagnitudeAtMost(target_position.z(), kMaxLength, "target z [m]");
   const bool full_pose = options.mode == IkMode::FullPose;
   if (full_pose) {
     requireUnit(target_orientation, "target orientation");

@@ -76,8 +76,8 @@ void requireUnit(const Eigen::Quaterniond& q, const char* what) {
 
 SrcJoint::SrcJoint(double base_radius, double link_radius)
     : base_radius_(base_radius), link_radius_(link_radius) {
-  requirePositive(base_radius, "base sphere radius l_{i-1} [m]");
-  requirePositive(link_radius, "link sphere radius l_i [m]");
+  requireLength(base_radius, "base sphere radius l_{i-1} [m]");
+  requireLength(link_radius, "link sphere radius l_i [m]");
 }
 
 Eigen::Vector3d SrcJoint::linkRateInPlane(const Eigen::Vector2d& joint_velocity) const {

@@ -14,10 +14,10 @@ TrolleyDrive::TrolleyDrive(double wheel_radius, double wheel_interval, double in
       wheel_interval_(wheel_interval),
       inner_radius_(inner_radius),
       outer_radius_(outer_radius) {
-  requirePositive(wheel_radius, "wheel radius r_w [m]");
-  requirePositive(wheel_interval, "wheel interval l_w [m]");
-  requirePositive(inner_radius, "shell inner radius r_in [m]");
-  requirePositive(outer_radius, "shell outer radius r_out [m]");
+  requireLength(wheel_radius, "wheel radius r_w [m]");
+  requireLength(wheel_interval, "wheel interval l_w [m]");
+  requireLength(inner_radius, "shell inner radius r_in [m]");
+  requireLength(outer_radius, "shell outer radius r_out [m]");
   std::ostringstream message;
   message.precision(17);
   if (inner_radius > outer_radius) {
@@ -35,8 +35,8 @@ TrolleyDrive::TrolleyDrive(double wheel_radius, double wheel_interval, double in
 }
 
 TrolleySpeeds TrolleyDrive::trolleySpeeds(const WheelSpeeds& wheels) const {
-  requireFinite(wheels.right, "right wheel speed w_r [rad/s]");
-  requireFinite(wheels.left, "left wheel speed w_l [rad/s]");
+  requireMagnitudeAtMost(wheels.right, kMaxSpeed, "right wheel speed w_r [rad/s]");
+  requireMagnitudeAtMost(wheels.left, kMaxSpeed, "left wheel speed w_l [rad/s]");
   TrolleySpeeds trolley;
   // Eq 64; r_out r_w / sqrt(4 r_in² − l_w²) = r_out r_w / (2 r').
   trolley.forward =
@@ -46,8 +46,8 @@ TrolleySpeeds TrolleyDrive::trolleySpeeds(const WheelSpeeds& wheels) const {
 }
 
 WheelSpeeds TrolleyDrive::wheelSpeeds(const TrolleySpeeds& trolley) const {
-  requireFinite(trolley.forward, "trolley forward speed u_f [m/s]");
-  requireFinite(trolley.steering, "trolley steering speed u_s [rad/s]");
+  requireMagnitudeAtMost(trolley.forward, kMaxSpeed, "trolley forward speed u_f [m/s]");
+  requireMagnitudeAtMost(trolley.steering, kMaxSpeed, "trolley steering speed u_s [rad/s]");
   const double forward = contact_radius_ / (outer_radius_ * wheel_radius_) * trolley.forward;
   const double steering = wheel_interval_ / (2.0 * wheel_radius_) * trolley.steering;
   return {forward + steering, forward - steering};  // eq 65

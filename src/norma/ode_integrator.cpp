@@ -4,6 +4,7 @@
 #include <boost/numeric/ublas/matrix.hpp>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -69,6 +70,14 @@ void integrateLogged(const OdeRhs& rhs, OdeState& x, double duration, double log
     throw std::invalid_argument("duration [s] must be >= 0, got " + std::to_string(duration));
   }
   requirePositive(log_rate, "log rate [Hz]");
+  // Bounded before anything is allocated: 1e300 s at 1 Hz is a request, not a run.
+  if (!(duration * log_rate <= kMaxLoggedSamples)) {
+    std::ostringstream message;
+    message << "duration " << duration << " s at log rate " << log_rate << " Hz is "
+            << duration * log_rate << " samples, more than the " << kMaxLoggedSamples
+            << " a run allows";
+    throw std::invalid_argument(message.str());
+  }
   const std::vector<double> times = logTimes(duration, log_rate);
   auto checked_observer = [&observer](const OdeState& state, double t) {
     for (double v : state) {

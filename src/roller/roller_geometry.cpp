@@ -38,7 +38,7 @@ void requireRollingAxisInPlane(double alpha, int roller) {
 }  // namespace
 
 Eigen::Vector3d spherePoint(double radius, const SphericalDirection& direction) {
-  requirePositive(radius, "sphere radius r [m]");
+  requireLength(radius, "sphere radius r [m]");
   requireFinite(direction.azimuth, "contact azimuth [rad]");
   requireFinite(direction.elevation, "contact elevation [rad]");
   const double horizontal = std::cos(direction.elevation);
@@ -59,7 +59,7 @@ double wrapToPeriod(double angle, double period) {
 RollerGeometry::RollerGeometry(double radius, const SphericalDirection& contact1,
                                const SphericalDirection& contact2, double alpha1, double alpha2)
     : radius_(radius) {
-  requirePositive(radius, "sphere radius r [m]");
+  requireLength(radius, "sphere radius r [m]");
   requireFinite(contact1.azimuth, "azimuth of P1 [rad]");
   requireFinite(contact1.elevation, "elevation of P1 [rad]");
   requireFinite(contact2.azimuth, "azimuth of P2 [rad]");

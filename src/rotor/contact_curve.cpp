@@ -20,7 +20,7 @@ namespace {
 
 [[noreturn]] void rejectRatio(double k) {
   std::ostringstream message;
-  message << "inertia ratio k must be >= 0, got " << k;
+  message << "inertia ratio k must be in [0, " << kMaxInertiaRatio << "], got " << k;
   throw std::invalid_argument(message.str());
 }
 
@@ -63,8 +63,7 @@ Eigen::Vector2d contactAngleRates(const CurvePoint& curve) {
 }
 
 PlaneState realizableCurveRates(double k, const CurvePoint& curve, double psi) {
-  requireFinite(k, "inertia ratio k");
-  if (k < 0.0) rejectRatio(k);
+  if (!(k >= 0.0 && k <= kMaxInertiaRatio)) rejectRatio(k);
   requireFinite(psi, "psi [rad]");
   const double w = checkedCosV(curve.point);
   requireFiniteTangent(curve.tangent);

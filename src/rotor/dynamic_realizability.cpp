@@ -10,10 +10,9 @@ namespace spherical_robots::rotor {
 namespace {
 
 void requireRatio(double k) {
-  requireFinite(k, "inertia ratio k");
-  if (k < 0.0) {
+  if (!(k >= 0.0 && k <= kMaxInertiaRatio)) {
     std::ostringstream message;
-    message << "inertia ratio k must be >= 0, got " << k;
+    message << "inertia ratio k must be in [0, " << kMaxInertiaRatio << "], got " << k;
     throw std::invalid_argument(message.str());
   }
 }

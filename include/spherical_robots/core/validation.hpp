@@ -30,4 +30,17 @@ inline void requireMagnitudeAtMost(double value, double bound, std::string_view 
   if (!(std::abs(value) <= bound)) rejectMagnitude(value, bound, what);
 }
 
+/// The largest length [m] (a radius, a target, a position) and the largest speed [m/s or rad/s]
+/// a model here takes: every robot of the five papers is well under a metre and its drives under
+/// a few hundred rad/s, while 1e300 passes every finiteness check and overflows its squares.
+constexpr double kMaxLength = 1e3;
+constexpr double kMaxSpeed = 1e4;
+
+/// @throw std::invalid_argument "<what> must be finite and > 0, ..." or "... magnitude <=
+/// kMaxLength ..." unless 0 < value <= kMaxLength.
+inline void requireLength(double value, std::string_view what) {
+  requirePositive(value, what);
+  requireMagnitudeAtMost(value, kMaxLength, what);
+}
+
 }  // namespace spherical_robots

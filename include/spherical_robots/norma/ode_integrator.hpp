@@ -31,11 +31,14 @@ struct OdeOptions {
 /// @throw std::invalid_argument naming the first option that is not finite and > 0.
 void validate(const OdeOptions& options);
 
+/// The most samples one logged run may ask for (a 1300 s run at the paper's rate logs 1.3e4).
+constexpr double kMaxLoggedSamples = 1e8;
+
 /// Integrates x from t = 0 to duration, calling observer at t = k / log_rate for every k with
 /// k / log_rate <= duration (t = 0 and, when it falls on the grid, t = duration inclusive; a
 /// final call at t = duration otherwise). x holds the state at t = duration on return.
-/// @throw std::invalid_argument on duration < 0, a log rate or option that is not > 0, or a
-///        state that turns non-finite.
+/// @throw std::invalid_argument on duration < 0, a log rate or option that is not > 0, more than
+///        kMaxLoggedSamples samples, or a state that turns non-finite.
 void integrateLogged(const OdeRhs& rhs, OdeState& x, double duration, double log_rate,
                      const OdeOptions& options, const OdeObserver& observer);
 

@@ -7,6 +7,10 @@
 
 namespace spherical_robots::rotor {
 
+/// The largest inertia ratio k = J_xx / J_zz any function here takes: far above any sphere's
+/// (section IV: 0-5), and small enough that a step cannot stall its integrator (k = 1e300 did).
+constexpr double kMaxInertiaRatio = 100.0;
+
 /// The coordinates integrated along a curve: contact point on the plane and heading.
 struct PlaneState {
   double u_a = 0.0;  ///< [R]

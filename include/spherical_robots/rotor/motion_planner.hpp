@@ -27,11 +27,10 @@ struct PlanRequest {
 };
 
 /// Upper bounds of a request, so that no request can block a planner for seconds (one plan costs
-/// milliseconds per heading turn and step): n <= 20 steps, |m| <= 10 heading turns, k <= 100,
-/// |u_a|, |v_a| <= 1000 R, |ψ| <= 1000 rad.
+/// milliseconds per heading turn and step): n <= 20 steps, |m| <= 10 heading turns, k <=
+/// kMaxInertiaRatio, |u_a|, |v_a| <= 1000 R, |ψ| <= 1000 rad.
 constexpr int kMaxSteps = 20;
 constexpr int kMaxHeadingTurns = 10;
-constexpr double kMaxInertiaRatio = 100.0;
 constexpr double kMaxTargetDistance = 1000.0;
 constexpr double kMaxTargetHeading = 1000.0;
 
