@@ -1,6 +1,7 @@
 #include "spherical_robots/ros/hardware_interface_sim_ros.hpp"
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
+#include "spherical_robots/ros/timer_jump_guard.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -203,6 +204,8 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
   // A ros::Timer (not a WallTimer) so the actuators follow simulated time under /use_sim_time.
   timer_ =
       nh.createTimer(ros::Duration(1.0 / rate), &HardwareInterfaceSimRos::timerCallback, this);
+  timer_guard_ = std::make_unique<TimerJumpGuard>(
+      nh, std::vector<std::pair<ros::Timer*, double>>{{&timer_, 1.0 / rate}}, clock_.maxStep());
 
   const auto& limits = actuators_.limits().front();
   ROS_INFO("hardware_interface_sim: %zu actuators, |velocity| <= %g rad/s, |accel| <= %g rad/s^2, "
@@ -269,6 +272,7 @@ void HardwareInterfaceSimRos::followClock(const ros::Time& now) {
   if (step != ClockStep::kJumpForward && step != ClockStep::kJumpBack) return;
   const double from = actuators_.now();
   actuators_.rebase(now.toSec());
+  if (timer_guard_) timer_guard_->reset();
   ROS_WARN_STREAM("hardware_interface_sim: ROS time jumped from " << from << " to " << now.toSec()
                   << " s (" << toString(step) << ", more than max_clock_step " << clock_.maxStep()
                   << " s): continuing from the new time, no time taken as elapsed");

@@ -1,6 +1,7 @@
 #include "spherical_robots/ros/pure_pursuit_ros.hpp"
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
+#include "spherical_robots/ros/timer_jump_guard.hpp"
 
 #include <geometry_msgs/PointStamped.h>
 #include <nav_msgs/Path.h>
@@ -69,8 +70,10 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.setHardwareID(terrain::toString(type_) + " sphere");
   updater_.add("pure pursuit controller", this, &PurePursuitRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
-  timer_ = nh.createTimer(ros::Duration(1.0 / positiveParam(pnh, "rate", 50.0)),
-                          &PurePursuitRos::onTimer, this);
+  const double period = 1.0 / positiveParam(pnh, "rate", 50.0);
+  timer_ = nh.createTimer(ros::Duration(period), &PurePursuitRos::onTimer, this);
+  timer_guard_ = std::make_unique<TimerJumpGuard>(
+      nh, std::vector<std::pair<ros::Timer*, double>>{{&timer_, period}}, clock_.maxStep());
 }
 
 void PurePursuitRos::onTerrainState(const spherical_robots::TerrainState& msg) {
@@ -119,7 +122,9 @@ void PurePursuitRos::warnIgnoredOnce(const std::vector<std::string>& fields) {
 
 void PurePursuitRos::onTimer(const ros::TimerEvent&) {
   const ros::Time now = ros::Time::now();
-  if (const double jump = clock_.jumpOver(now.toSec()); jump != 0.0 && !start_.isZero()) {
+  const double jump = clock_.jumpOver(now.toSec());
+  if (jump != 0.0) timer_guard_->reset();
+  if (jump != 0.0 && !start_.isZero()) {
     // The reference goes on from where it was, not from where the jump would put it.
     start_ = ros::Time(std::max(0.0, start_.toSec() + jump));  // ros::Time cannot go below 0
     ROS_WARN_STREAM("ROS time jumped by " << jump << " s to " << now.toSec()

@@ -1,6 +1,7 @@
 #include "spherical_robots/ros/rotor_planner_ros.hpp"
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
+#include "spherical_robots/ros/timer_jump_guard.hpp"
 
 #include <nav_msgs/Path.h>
 #include <visualization_msgs/Marker.h>
@@ -84,6 +85,9 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   odom_sub_ = nh.subscribe("odom", 10, &RotorPlannerRos::onOdometry, this);
   command_timer_ = nh_.createTimer(ros::Duration(command_period_), &RotorPlannerRos::onCommandTimer,
                                    this, false, false);
+  timer_guard_ = std::make_unique<TimerJumpGuard>(
+      nh, std::vector<std::pair<ros::Timer*, double>>{{&command_timer_, command_period_}},
+      clock_.maxStep());
   // The updater publishes only when called: a wall timer keeps /diagnostics going (and the odom
   // input's staleness visible) when no odom arrives.
   diagnostics_timer_ = startDiagnostics(nh, updater_);
@@ -362,6 +366,7 @@ void RotorPlannerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat
 void RotorPlannerRos::onCommandTimer(const ros::TimerEvent&) {
   const ros::Time now = ros::Time::now();
   const double jump = clock_.jumpOver(now.toSec());
+  if (jump != 0.0) timer_guard_->reset();
   if (!execution_) return;
   if (jump != 0.0) {
     // The schedule goes on from where it was, not from where the jump would put it.

@@ -1,6 +1,7 @@
 #include "spherical_robots/ros/sim_clock.hpp"
 
 #include "spherical_robots/ros/ros_parameter_source.hpp"
+#include "spherical_robots/ros/timer_jump_guard.hpp"
 
 #include <rosgraph_msgs/Clock.h>
 
@@ -11,6 +12,12 @@
 #include <utility>
 
 namespace spherical_robots {
+namespace {
+
+// [s] a longer forward step of the followed clock is a jump (every node's ~max_clock_step default).
+constexpr double kMaxClockStep = 5.0;
+
+}  // namespace
 
 bool periodDue(const ros::Time& last, const ros::Time& now, double period) {
   return last.isZero() || now < last || (now - last).toSec() >= period - 1e-9;
@@ -29,6 +36,8 @@ SimClock::SimClock(ros::NodeHandle nh, double step, double speedup, Tick tick, R
   if (!ownsClock()) {
     timer_ = nh.createTimer(ros::Duration(step_),
                             [this](const ros::TimerEvent& event) { onTick(event.current_real); });
+    timer_guard_ = std::make_unique<TimerJumpGuard>(
+        nh, std::vector<std::pair<ros::Timer*, double>>{{&timer_, step_}}, kMaxClockStep);
     ROS_INFO_STREAM("Stepping every " << step_ << " s of ROS time ("
                                       << (ros::Time::isSimTime() ? "simulated" : "wall") << " clock)");
     return;

@@ -8,9 +8,13 @@
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/Bool.h>
 
+#include <memory>
+
 #include "spherical_robots/core/clock_jump.hpp"
 #include "spherical_robots/hardware/simulated_actuators.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
+
+#include "spherical_robots/ros/timer_jump_guard.hpp"
 
 namespace spherical_robots {
 
@@ -41,6 +45,7 @@ class HardwareInterfaceSimRos {
   ros::Subscriber command_sub_;
   ros::Subscriber e_stop_sub_;
   ros::Timer timer_;
+  std::unique_ptr<TimerJumpGuard> timer_guard_;  ///< restarts timer_ after a clock jump
   /// Counts accepted and rejected commands and logs rejections; the watchdog is the actuators'.
   InputMonitor command_input_;
   ClockJumpDetector clock_;

@@ -18,6 +18,8 @@
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/surface.hpp"
 
+#include "spherical_robots/ros/timer_jump_guard.hpp"
+
 namespace spherical_robots {
 
 /// Parameters (private, ~): robot_type (3R | 2R | RT | RS, "3R"); mode (tracking | teleop,
@@ -89,6 +91,7 @@ class PurePursuitRos {
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
   ros::Timer timer_;
+  std::unique_ptr<TimerJumpGuard> timer_guard_;  ///< restarts timer_ after a clock jump
 };
 
 }  // namespace spherical_robots

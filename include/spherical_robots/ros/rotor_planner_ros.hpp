@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,8 @@
 #include "spherical_robots/rotor/figure_eight.hpp"
 #include "spherical_robots/rotor/manoeuvre_correction.hpp"
 #include "spherical_robots/rotor/plan_execution.hpp"
+
+#include "spherical_robots/ros/timer_jump_guard.hpp"
 
 namespace spherical_robots {
 
@@ -154,6 +157,7 @@ class RotorPlannerRos {
   Trail driven_;  ///< driven_path, latched
   ros::Publisher done_pub_;
   ros::Timer command_timer_;
+  std::unique_ptr<TimerJumpGuard> timer_guard_;  ///< restarts command_timer_ after a jump
   ros::WallTimer diagnostics_timer_;
 };
 

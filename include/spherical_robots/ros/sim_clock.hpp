@@ -11,6 +11,8 @@
 
 #include <ros/subscriber.h>
 
+#include "spherical_robots/ros/timer_jump_guard.hpp"
+
 namespace spherical_robots {
 
 /// Whether a periodic action last done at `last` (zero: never) is due again at `now`, also after
@@ -58,6 +60,7 @@ class SimClock {
   ros::Publisher clock_pub_;
   ros::WallTimer wall_timer_;
   ros::Timer timer_;
+  std::unique_ptr<TimerJumpGuard> timer_guard_;  ///< restarts timer_ after a clock jump
   ros::Time now_;
   ros::Time first_tick_;
   ros::WallTime first_tick_wall_;
