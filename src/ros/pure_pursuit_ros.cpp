@@ -33,8 +33,9 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
              positiveParam(pnh, "input_timeout", 0.5)),
       updater_(nh, pnh) {
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
-  controller_ = std::make_unique<terrain::PurePursuitController>(
-      type_, terrain_config.gains.at(type_), radius_);
+  controller_ = config::makePursuitController(
+      parsedParam(pnh, "law", "smooth", terrain::pursuitLawFromString), type_, terrain_config,
+      radius_);
 
   command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", 10);
   state_sub_ = nh.subscribe("terrain_state", 10, &PurePursuitRos::onTerrainState, this);
@@ -121,7 +122,8 @@ terrain::DriveRates PurePursuitRos::track(const ros::Time& now) {
   if (!geometry_ || !input_.fresh(now)) return {};
   if (start_.isZero()) start_ = now;
   const terrain::DesiredPoint desired =
-      terrain::liftOntoSurface(*path_, *surface_, (now - start_).toSec());
+      terrain::liftOntoSurface(*path_, *surface_, (now - start_).toSec(),
+                               controller_->velocityWindow());
   error_ = terrain::trackingError(*geometry_, desired.position);
   error_pub_.publish(conversions::toTrackingErrorMsg(error_, desired, kWorldFrame, now));
   geometry_msgs::PointStamped target;
@@ -129,7 +131,7 @@ terrain::DriveRates PurePursuitRos::track(const ros::Time& now) {
   target.header.frame_id = kWorldFrame;
   target.point = conversions::toPoint(desired.position);
   target_pub_.publish(target);
-  return controller_->command(error_, desired.velocity);
+  return controller_->command(*geometry_, tilt_, error_, desired.velocity);
 }
 
 terrain::DriveRates PurePursuitRos::teleop(const ros::Time& now) {
