@@ -40,7 +40,7 @@ terrain::PursuitGains loadGains(const ParameterSource& source, terrain::RobotTyp
 // The smooth law's gains, checked with the key in the message; the ranges are the core's.
 terrain::SmoothPursuitGains loadSmoothGains(const ParameterSource& source, terrain::RobotType type) {
   const std::string prefix = kRoot + "smooth_gains/" + terrain::toString(type) + "/";
-  terrain::SmoothPursuitGains gains;
+  terrain::SmoothPursuitGains gains = terrain::defaultSmoothGains(type);
   const auto gain = [&](const char* name, double& value) {
     value = finiteNumber(source, prefix + name, value);
   };
@@ -56,7 +56,8 @@ terrain::SmoothPursuitGains loadSmoothGains(const ParameterSource& source, terra
   try {
     terrain::validate(gains);
   } catch (const std::invalid_argument& error) {
-    throw std::invalid_argument(source.origin() + ": " + prefix + ": " + error.what());
+    throw std::invalid_argument(source.origin() + ": " + prefix.substr(0, prefix.size() - 1) +
+                                ": " + error.what());
   }
   return gains;
 }

@@ -26,6 +26,23 @@ void requireGain(double value, const char* name, const char* unit, bool zero_all
 
 }  // namespace
 
+SmoothPursuitGains defaultSmoothGains(RobotType type) {
+  SmoothPursuitGains gains;
+  if (type == RobotType::RollingAndTurning) {
+    gains.window = 1.0;
+    gains.lead = 0.25;
+    gains.heading_gain = 4.0;
+  } else if (type == RobotType::RollingAndSteering) {
+    gains.window = 1.0;
+    gains.lead = 0.33;
+    gains.approach_speed = 0.2;
+    gains.cross_gain = 2.0;
+    gains.heading_gain = 3.0;
+    gains.min_speed = 0.05;
+  }
+  return gains;
+}
+
 void validate(const SmoothPursuitGains& gains) {
   requireGain(gains.window, "window", "s", true);
   requireGain(gains.lead, "lead", "s", true);

@@ -11,8 +11,8 @@
 
 namespace spherical_robots::terrain {
 
-/// Gains of the smooth law; each type reads the ones it uses. The member defaults are 3R's
-/// (config/terrain.yaml holds every type's).
+/// Gains of the smooth law; each type reads the ones it uses. The member defaults are 3R's and
+/// 2R's; defaultSmoothGains() gives every type's.
 struct SmoothPursuitGains {
   /// tau [s] >= 0: w is the mean of the path's velocity over [t + lead - tau/2, t + lead + tau/2],
   /// so a corner turns the feed-forward over tau instead of at once.
@@ -31,6 +31,11 @@ struct SmoothPursuitGains {
   /// direction means nothing at u = 0).
   double min_speed = 0.01;
 };
+
+/// The default gains of a robot type (docs/conventions.md, "The smooth law"; also in
+/// config/terrain.yaml): RT and RS lead their window by 1 / heading_gain and turn harder, RS
+/// approaches slower (its turns are slow) and keeps its steering regularised over more speed.
+SmoothPursuitGains defaultSmoothGains(RobotType type);
 
 /// Throws std::invalid_argument naming the first gain that is non-finite or out of its range,
 /// with its value and the limit.
