@@ -46,6 +46,7 @@ SmoothPursuitGains testGains() {
   g.cross_gain = 1.7;
   g.heading_gain = 2.6;
   g.tilt_gain = 6.5;
+  g.max_tilt_rate = 1.3;
   g.max_tilt = 0.75;
   g.min_speed = 0.02;
   return g;
@@ -83,7 +84,7 @@ struct Expected {
 // conventions.md, "The smooth law": u = w + c, t = w / sqrt(|w|^2 + v_e^2),
 // k = K_c e + (K_a - K_c)(e.t) t, c = v_c k / (v_c + |k|); s = u_l / sqrt(u_h^2 + u_l^2 + v_e^2);
 //   3R: theta = u_h/R, phi = -u_l/R, psi = k_h s;  2R: theta, phi;  RT: theta, psi;
-//   RS: alpha = (|u| + u_h) / (2 R cos phi), phi_dot = k_t (phi* - phi),
+//   RS: alpha = (|u| + u_h) / (2 R cos phi), phi_dot = r_t tanh(k_t (phi* - phi) / r_t),
 //       phi* = asin(S tanh(sigma / S)), sigma = -k_h s alpha / (alpha^2 + (v_e/R)^2), S = sin max.
 Expected documentedLaw(RobotType type, const SmoothPursuitGains& k, const ContactGeometry& geo,
                        double tilt, const Eigen::Vector3d& e, const Eigen::Vector3d& w) {
@@ -108,7 +109,9 @@ Expected documentedLaw(RobotType type, const SmoothPursuitGains& k, const Contac
       const double alpha = (std::sqrt(uh * uh + ul * ul) + uh) / (2 * kR * std::cos(tilt));
       const double sigma = -k.heading_gain * s * alpha / (alpha * alpha + ve * ve / (kR * kR));
       const double bound = std::sin(k.max_tilt);
-      out.rates = {alpha, k.tilt_gain * (std::asin(bound * std::tanh(sigma / bound)) - tilt), 0.0};
+      const double target = std::asin(bound * std::tanh(sigma / bound));
+      out.rates = {alpha,
+                   k.max_tilt_rate * std::tanh(k.tilt_gain * (target - tilt) / k.max_tilt_rate), 0.0};
       break;
     }
   }
@@ -261,6 +264,19 @@ TEST(SmoothLawRs, NeverDrivesTheTiltPastMaxTilt) {
   }
 }
 
+TEST(SmoothLawRs, TiltRateStaysWithinItsBound) {
+  const SmoothPursuitGains k = testGains();
+  const SmoothPursuitController ctrl(RobotType::RollingAndSteering, k, kR, kTiltLimit);
+  const ContactGeometry geo = geometryOn({0, 0}, 0.0);
+  for (double tilt : {-1.0, -0.5, 0.0, 0.5, 1.0}) {
+    for (double side : {-3.0, 3.0}) {
+      const DriveRates rates =
+          ctrl.command(geo, tilt, errorTo(geo, {0.0, side, 0.0}), Eigen::Vector3d(0.1, 0, 0));
+      EXPECT_LT(std::abs(rates.lateral_rate), k.max_tilt_rate) << tilt << " " << side;
+    }
+  }
+}
+
 TEST(SmoothLawRs, RollsAtHalfTheDesiredSpeedWithTheDesiredVelocityAbeam) {
   const SmoothPursuitController ctrl(RobotType::RollingAndSteering, testGains(), kR, kTiltLimit);
   const ContactGeometry geo = geometryOn({0, 0}, 0.0);
@@ -312,6 +328,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadGain{"cross_gain", &SmoothPursuitGains::cross_gain, 0.0, "0", "> 0"},
         BadGain{"heading_gain", &SmoothPursuitGains::heading_gain, -2.0, "-2", ">= 0"},
         BadGain{"tilt_gain", &SmoothPursuitGains::tilt_gain, 0.0, "0", "> 0"},
+        BadGain{"max_tilt_rate", &SmoothPursuitGains::max_tilt_rate, -1.0, "-1", "> 0"},
         BadGain{"max_tilt", &SmoothPursuitGains::max_tilt, -0.1, "-0.1", "> 0"},
         BadGain{"min_speed", &SmoothPursuitGains::min_speed, kNaN, "nan", "> 0"}),
     [](const auto& info) { return std::string(info.param.name); });

@@ -120,13 +120,14 @@ void expectDocumentedSmoothGains(const TerrainConfig& c) {
     const bool steers = type == RobotType::RollingAndTurning || type == RobotType::RollingAndSteering;
     const bool rs = type == RobotType::RollingAndSteering;
     EXPECT_EQ(g.window, steers ? 1.0 : 0.5);
-    EXPECT_EQ(g.lead, type == RobotType::RollingAndTurning ? 0.25 : rs ? 0.33 : 0.0);
+    EXPECT_EQ(g.lead, type == RobotType::RollingAndTurning ? 0.25 : rs ? 0.5 : 0.0);
     EXPECT_EQ(g.approach_speed, rs ? 0.2 : 0.5);
     EXPECT_EQ(g.along_gain, 4.0);
-    EXPECT_EQ(g.cross_gain, rs ? 2.0 : 3.0);
-    EXPECT_EQ(g.heading_gain, type == RobotType::RollingAndTurning ? 4.0 : rs ? 3.0 : 2.0);
-    EXPECT_EQ(g.tilt_gain, 8.0);
+    EXPECT_EQ(g.cross_gain, rs ? 1.5 : 3.0);
+    EXPECT_EQ(g.heading_gain, type == RobotType::RollingAndTurning ? 4.0 : 2.0);
+    EXPECT_EQ(g.tilt_gain, 3.0);
     EXPECT_EQ(g.max_tilt, 0.8);
+    EXPECT_EQ(g.max_tilt_rate, 1.0);
     EXPECT_EQ(g.min_speed, rs ? 0.05 : 0.01);
   }
 }
@@ -136,7 +137,7 @@ TEST(TerrainConfig, ShippedAndMissingSmoothGainsAreTheDocumentedOnes) {
   expectDocumentedSmoothGains(loadText("{}\n"));
   const TerrainConfig c = loadText("terrain:\n  smooth_gains:\n    RS: {heading_gain: 2.5}\n");
   EXPECT_EQ(c.smooth_gains.at(RobotType::RollingAndSteering).heading_gain, 2.5);
-  EXPECT_EQ(c.smooth_gains.at(RobotType::RollingAndSteering).cross_gain, 2.0);  // RS's own
+  EXPECT_EQ(c.smooth_gains.at(RobotType::RollingAndSteering).cross_gain, 1.5);  // RS's own
   EXPECT_EQ(c.smooth_gains.at(RobotType::RollingAndTurning).heading_gain, 4.0);
 }
 

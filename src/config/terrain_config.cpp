@@ -51,6 +51,7 @@ terrain::SmoothPursuitGains loadSmoothGains(const ParameterSource& source, terra
   gain("cross_gain", gains.cross_gain);
   gain("heading_gain", gains.heading_gain);
   gain("tilt_gain", gains.tilt_gain);
+  gain("max_tilt_rate", gains.max_tilt_rate);
   gain("max_tilt", gains.max_tilt);
   gain("min_speed", gains.min_speed);
   try {

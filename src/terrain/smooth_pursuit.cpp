@@ -34,10 +34,10 @@ SmoothPursuitGains defaultSmoothGains(RobotType type) {
     gains.heading_gain = 4.0;
   } else if (type == RobotType::RollingAndSteering) {
     gains.window = 1.0;
-    gains.lead = 0.33;
+    gains.lead = 0.5;
     gains.approach_speed = 0.2;
-    gains.cross_gain = 2.0;
-    gains.heading_gain = 3.0;
+    gains.cross_gain = 1.5;
+    gains.heading_gain = 2.0;
     gains.min_speed = 0.05;
   }
   return gains;
@@ -51,6 +51,7 @@ void validate(const SmoothPursuitGains& gains) {
   requireGain(gains.cross_gain, "cross_gain", "1/s", false);
   requireGain(gains.heading_gain, "heading_gain", "1/s", true);
   requireGain(gains.tilt_gain, "tilt_gain", "1/s", false);
+  requireGain(gains.max_tilt_rate, "max_tilt_rate", "rad/s", false);
   requireGain(gains.max_tilt, "max_tilt", "rad", false);
   requireGain(gains.min_speed, "min_speed", "m/s", false);
 }
@@ -119,14 +120,16 @@ DriveRates SmoothPursuitController::command(const ContactGeometry& geometry, dou
       // (|u| + u.h) / 2: u.h when heading along u, |u| / 2 with u abeam, 0 only with u straight
       // behind; at R alpha' cos(phi) (eq 48). The turn comes from the tilt: eq 44 inverted,
       // sin(phi*) = -turn / alpha', regularised where alpha' -> 0 and bounded smoothly by
-      // max_tilt; the tilt rate servos phi towards phi*.
+      // max_tilt; the tilt rate servos phi towards phi*, smoothly bounded by max_tilt_rate.
       rates.roll_rate = 0.5 * (std::hypot(forward, leftward) + forward) / (radius_ * std::cos(tilt));
       const double roll_floor = gains_.min_speed / radius_;
       const double sine = -turn * rates.roll_rate /
                           (rates.roll_rate * rates.roll_rate + roll_floor * roll_floor);
       const double max_sine = std::sin(gains_.max_tilt);
       const double target_tilt = std::asin(max_sine * std::tanh(sine / max_sine));
-      rates.lateral_rate = gains_.tilt_gain * (target_tilt - tilt);
+      rates.lateral_rate =
+          gains_.max_tilt_rate *
+          std::tanh(gains_.tilt_gain * (target_tilt - tilt) / gains_.max_tilt_rate);
       break;
     }
   }

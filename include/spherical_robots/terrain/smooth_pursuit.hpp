@@ -12,7 +12,7 @@
 namespace spherical_robots::terrain {
 
 /// Gains of the smooth law; each type reads the ones it uses. The member defaults are 3R's and
-/// 2R's; defaultSmoothGains() gives every type's.
+/// 2R's (and RS's for the tilt, which only RS has); defaultSmoothGains() gives every type's.
 struct SmoothPursuitGains {
   /// tau [s] >= 0: w is the mean of the path's velocity over [t + lead - tau/2, t + lead + tau/2],
   /// so a corner turns the feed-forward over tau instead of at once.
@@ -25,7 +25,10 @@ struct SmoothPursuitGains {
   double along_gain = 4.0;
   double cross_gain = 3.0;  ///< K_c [1/s] > 0: the same across the path
   double heading_gain = 2.0;    ///< k_h [1/s] >= 0: turn rate per unit sine of u off h (3R, RT, RS)
-  double tilt_gain = 8.0;       ///< k_t [1/s] > 0: RS tilt servo
+  double tilt_gain = 3.0;       ///< k_t [1/s] > 0: RS tilt servo
+  /// r_t [rad/s] > 0: the RS tilt rate's smooth bound, r_t tanh(k_t (phi* - phi) / r_t), so that
+  /// a swing of the tilt stays within what a tilt actuator's acceleration limit can follow.
+  double max_tilt_rate = 1.0;
   double max_tilt = 0.8;        ///< [rad] > 0: bound of the RS tilt set-point, inside the limit
   /// v_e [m/s] > 0: where |u| falls below it, the steering towards u fades out smoothly (u's
   /// direction means nothing at u = 0).
