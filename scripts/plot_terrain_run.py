@@ -26,6 +26,11 @@ A topic missing under <ns> is looked up by its message type. From a CSV, the col
 Times are header stamps (or the CSV's t) in simulated time, which starts at 0; a bag recorded in
 wall time is measured from its first tracking-error message.
 
+The summary counts the sign changes of the commanded rates from --steady-from on: consecutive
+set-points of one actuator of opposite signs, both above 0.01 rad/s in magnitude (a rate that
+chatters at convergence, docs/results.md). From a bag these are actuators/command's set-points;
+a CSV holds none, so there they are the realised rates.
+
 Exit status: 0 on success, 1 if the run cannot be read or holds no tracking errors or states.
 """
 import argparse
@@ -148,6 +153,32 @@ def summarise(errors, threshold, steady_from):
         "steady_max": max(steady) if steady else math.nan,
         "steady_n": len(steady),
     }
+
+
+SIGN_FLOOR = 0.01  # [rad/s]: a sign change counts when both neighbours are above it
+
+
+def sign_changes(series, steady_from, floor=SIGN_FLOOR):
+    """series: {name: [(t, rate)]} in time order. The sign changes from steady_from on (pairs of
+    consecutive samples of one series with opposite signs, both above floor in magnitude) and the
+    number of such pairs looked at, summed over the series: (changes, pairs)."""
+    changes = pairs = 0
+    for samples in series.values():
+        for (_, before), (t, now) in zip(samples, samples[1:]):
+            if t < steady_from:
+                continue
+            pairs += 1
+            changes += before * now < 0.0 and abs(before) > floor and abs(now) > floor
+    return changes, pairs
+
+
+def commanded_rates(run):
+    """The set-points of a bag, or a CSV's realised rates, as {name: [(t, rate)]}, and what they
+    are."""
+    if run["commands"]:
+        return run["commands"], "commanded set-points"
+    rates = {key: [(s[0], s[6 + i]) for s in run["states"]] for i, key in enumerate(RATES)}
+    return {k: v for k, v in rates.items() if any(r != 0.0 for _, r in v)}, "realised rates"
 
 
 def column(rows, i):
@@ -334,11 +365,15 @@ def main(argv=None):
     path_text = ("%d poses" % len(run["path"])) if run["path"] else "none in the %s" % run["source"]
     steady = ("mean %.4f m, max %.4f m (%d samples)"
               % (s["steady_mean"], s["steady_max"], s["steady_n"])) if s["steady_n"] else "no samples"
+    series, what = commanded_rates(run)
+    changes, pairs = sign_changes(series, args.steady_from)
     rows = [
         ("samples", "%d tracking errors (t = %.2f .. %.2f s), %d terrain states, desired path %s"
          % (len(s["norms"]), s["times"][0], s["times"][-1], len(run["states"]), path_text)),
         ("|e_t| < %g m first" % args.threshold, reached),
         ("|e_t| for t >= %g s" % args.steady_from, steady),
+        ("sign changes", "%d of %d steps of the %s for t >= %g s (%s)"
+         % (changes, pairs, what, args.steady_from, ", ".join(sorted(series)))),
         (run["source"], run_path),
         ("plot", out),
     ]

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
-"""Test of the bag plotting tools (test/plot_tools.test): plot_norma_run.py, plot_rotor_run.py and
-plot_freebot_run.py run as a user runs them, on bags this test writes with known motions, so what
-they print is checked against closed forms:
+"""Test of the bag plotting tools (test/plot_tools.test): plot_terrain_run.py, plot_norma_run.py,
+plot_rotor_run.py and plot_freebot_run.py run as a user runs them, on bags this test writes with
+known motions, so what they print is checked against closed forms:
+  * terrain: a 3R run whose turn set-point flips sign on every command after 40 s and whose
+    lateral one flips below 0.01 rad/s: the summary counts the flips of the first only;
   * Norma: the state moves along X = 0.1 t, Y = 0.2 t at 1 kHz for 2 s, the desired point runs
     0.01 m ahead in X: the plot is written and spans t = 0.01-2.00 s;
   * rotor: the plan ends at (0.05, 0.03) m with the attitude turned 0.4 rad about z; the centre
@@ -27,7 +29,8 @@ import rostest
 from geometry_msgs.msg import Point, Pose, PoseStamped, Quaternion
 from nav_msgs.msg import Odometry, Path
 from sensor_msgs.msg import JointState
-from spherical_robots.msg import FreebotGoalResult, FreebotState, NormaState, TrackingError
+from spherical_robots.msg import (FreebotGoalResult, FreebotState, NormaState, TerrainState,
+                                  TrackingError)
 
 HERE = os.path.dirname(os.path.realpath(__file__))
 sys.path.insert(0, HERE)
@@ -61,6 +64,33 @@ class PlotToolsCheck(unittest.TestCase):
     def assertPng(self, path):
         with open(path, 'rb') as f:
             self.assertEqual(f.read(8), b'\x89PNG\r\n\x1a\n', '%s is not a PNG' % path)
+
+    def test_terrain_sign_changes(self):
+        # 50 Hz for 60 s: theta 0.5 rad/s throughout; psi +-0.3 alternating on every command (it
+        # flips on each of the 1001 steps from t = 40 s, and before, uncounted); phi alternates
+        # +-0.005, below the 0.01 rad/s floor.
+        bag_path = self.path('terrain.bag')
+        with rosbag.Bag(bag_path, 'w') as bag:
+            for k in range(1, 3001):
+                t = k * 0.02
+                state = TerrainState(robot_type='3R', contact_model='paper',
+                                     contact_point=Point(0.1 * t, 0.0, 0.0))
+                state.header.stamp = stamp(t)
+                bag.write('/sphere/terrain_state', state, stamp(t))
+                error = TrackingError(desired=Point(0.1 * t, 0.0, 0.0), error_norm=0.001)
+                error.header.stamp = stamp(t)
+                bag.write('/sphere/tracking_error', error, stamp(t))
+                sign = 1.0 if k % 2 else -1.0
+                command = JointState(name=['theta', 'phi', 'psi'],
+                                     velocity=[0.5, 0.005 * sign, 0.3 * sign])
+                command.header.stamp = stamp(t)
+                bag.write('/sphere/actuators/command', command, stamp(t))
+        code, out, err = run_tool('plot_terrain_run.py', bag_path, '--out', self.path('terrain.png'))
+        self.assertEqual(code, 0, err)
+        # Pairs from t = 40.00 s (the 2000th command) on: 1001 per joint, 3 joints.
+        self.assertIn('sign changes:          1001 of 3003 steps of the commanded set-points '
+                      'for t >= 40 s (phi, psi, theta)', out)
+        self.assertPng(self.path('terrain.png'))
 
     def test_norma_bag(self):
         bag_path = self.path('norma.bag')

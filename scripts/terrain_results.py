@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Runs `sphere_sim terrain` for every robot x path x contact model and writes the figures and
-the table of docs/results.md (tracking figures and the paper-vs-rolling comparison).
+the table of docs/results.md (tracking figures and the paper-vs-rolling comparison), and the
+commanded rates of the paper's and the smooth law on the 3R circle, logged at every 5 ms step.
 
 usage: terrain_results.py SPHERE_SIM [--config DIR] [--out-dir docs]
 """
@@ -22,9 +23,10 @@ MODELS = ["paper", "rolling"]
 THRESHOLD, SETTLE = 0.1, 40.0
 
 
-def run(sim, config, robot, path, model, work):
-    out = os.path.join(work, f"{robot}_{path}_{model}.csv")
-    cmd = [sim, "terrain", "--robot", robot, "--path", path, "--model", model, "--out", out]
+def run(sim, config, robot, path, model, work, law="paper", log_rate="10"):
+    out = os.path.join(work, f"{robot}_{path}_{model}_{law}.csv")
+    cmd = [sim, "terrain", "--robot", robot, "--path", path, "--model", model, "--law", law,
+           "--log-rate", log_rate, "--out", out]
     if config:
         cmd += ["--config", config]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
@@ -38,6 +40,34 @@ def summary(run_data):
     first = next((ti for ti, ei in zip(t, e) if ei < THRESHOLD), float("nan"))
     after = [ei for ti, ei in zip(t, e) if ti >= SETTLE]
     return first, sum(after) / len(after), max(after)
+
+
+def law_figure(sim, config, work, figures):
+    """3R on the circle, paper model: the three commanded rates of each law (for 3R the realised
+    rates are the commanded ones), over the run and over one second at every 5 ms step."""
+    runs = {law: run(sim, config, "3R", "circle", "paper", work, law, "200")
+            for law in ("paper", "smooth")}
+    names = {"roll_rate": "roll θ̇", "lateral_rate": "lateral φ̇", "turn_rate": "turn ψ̇"}
+    fig, axes = plt.subplots(2, 2, figsize=(15, 7.5), sharey="row")
+    for col, (law, data) in enumerate(runs.items()):
+        for row, (start, end) in enumerate(((0.0, 200.0), (100.0, 101.0))):
+            ax = axes[row][col]
+            keep = [i for i, t in enumerate(data["t"]) if start <= t <= end]
+            for i, (key, label) in enumerate(names.items()):
+                ax.plot([data["t"][k] for k in keep], [data[key][k] for k in keep], color="C%d" % i,
+                        lw=0.8 if row == 0 else 1.0, marker="" if row == 0 else ".", ms=3,
+                        label=label)
+            ax.set_xlabel("t [s]")
+            ax.set_ylabel("commanded rate [rad/s]")
+            ax.grid(True, alpha=0.3)
+            ax.set_title("%s law, %s" % (law, "whole run" if row == 0
+                                         else "t = 100-101 s, every 5 ms step"))
+        axes[0][col].legend(fontsize=8, loc="upper right")
+    fig.suptitle("3R on the circle (eq 59 terrain, paper contact model): commanded drive rates")
+    fig.tight_layout()
+    name = os.path.join(figures, "terrain_laws_3R_circle.png")
+    fig.savefig(name, dpi=90)
+    print(f"wrote {name}", file=sys.stderr)
 
 
 def main():
@@ -85,6 +115,7 @@ def main():
         name = os.path.join(figures, f"terrain_contact_models_{path}.png")
         fig.savefig(name, dpi=90)
         print(f"wrote {name}", file=sys.stderr)
+    law_figure(args.sphere_sim, args.config, work, figures)
 
 
 if __name__ == "__main__":

@@ -154,6 +154,7 @@ TEST_F(SphereSimTest, UsageErrorsExitTwoWithUsageAndNoOutput) {
       {{"--robot", "XX", "--path", "circle"}, "XX"},
       {{"--robot", "3R", "--path", "square"}, "square"},
       {{"--robot", "3R", "--path", "circle", "--model", "slipping"}, "slipping"},
+      {{"--robot", "3R", "--path", "circle", "--law", "fast"}, "--law"},
       {{"--robot", "3R", "--path", "circle", "--dt", "0.0x5"}, "0.0x5"},
       {{"--robot", "3R", "--path", "circle", "--duration", "ten"}, "ten"},
       {{"--robot", "3R", "--path", "circle", "--duration", ""}, "--duration"},
@@ -285,13 +286,17 @@ TEST_F(SphereSimTest, HelpExplainsEveryOptionAndColumn) {
   const Process help = run({"terrain", "--help"});
   ASSERT_EQ(help.status, 0) << help.err;
   for (const char* option :
-       {"--robot", "--path", "--model", "--duration", "--dt", "--log-rate", "--config", "--out"}) {
+       {"--robot", "--path", "--model", "--law", "--duration", "--dt", "--log-rate", "--config",
+        "--out"}) {
     EXPECT_NE(help.out.find(option), std::string::npos) << option;
   }
   for (const char* default_text :
        {"(default 200)", "(default 0.005)", "(default 10)", "(default paper)"}) {
     EXPECT_NE(help.out.find(default_text), std::string::npos) << default_text;
   }
+  // --law's default and why it is the paper's (issue 13).
+  EXPECT_NE(help.out.find("[--law {paper,smooth}]"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("reproduces the paper"), std::string::npos) << help.out;
   // Every column the tool writes is explained.
   ASSERT_EQ(terrain({"--robot", "3R", "--path", "circle", "--duration", "0"}).status, 0);
   for (const std::string& column : readCsv(out_).header) {
@@ -362,6 +367,34 @@ TEST_F(SphereSimTest, CircleRunMatchesClosedForms) {
   }
   EXPECT_EQ(process.out.find("never"), std::string::npos) << process.out;
   EXPECT_LT(csv.rows.back().at(csv.column("e_norm")), 0.1);
+}
+
+// --law reaches the controller: on the circle after 40 s the paper's 3R turn rate k_psi zeta flips
+// sign from one logged step to the next (zeta crosses +-pi at convergence, docs/results.md); the
+// smooth law's never does. An unknown law names the option and the choices.
+TEST_F(SphereSimTest, LawSelectsTheTrackingLaw) {
+  const auto turnRateSignChanges = [this](const std::string& law) {
+    const Process process = terrain({"--robot", "3R", "--path", "circle", "--law", law,
+                                     "--duration", "60", "--log-rate", "200"});
+    EXPECT_EQ(process.status, 0) << process.err;
+    EXPECT_NE(process.out.find("law " + law), std::string::npos) << process.out;
+    const Csv csv = readCsv(out_);
+    int changes = 0;
+    for (std::size_t i = 1; i < csv.rows.size(); ++i) {
+      if (csv.at(i, "t") < 40.0) continue;
+      changes += csv.at(i - 1, "turn_rate") * csv.at(i, "turn_rate") < 0.0;
+    }
+    return changes;
+  };
+  EXPECT_EQ(turnRateSignChanges("smooth"), 0);
+  EXPECT_GT(turnRateSignChanges("paper"), 400);  // of 4000 steps
+  EXPECT_EQ(terrain({"--robot", "3R", "--path", "circle"}).status, 0);
+  EXPECT_NE(terrain({"--robot", "3R", "--path", "circle"}).out.find("law paper"), std::string::npos);
+  const Process bad = terrain({"--robot", "3R", "--path", "circle", "--law", "Smooth"});
+  EXPECT_EQ(bad.status, cli::kUsageError);
+  for (const char* word : {"--law", "Smooth", "paper", "smooth"}) {
+    EXPECT_NE(bad.err.find(word), std::string::npos) << word << ": " << bad.err;
+  }
 }
 
 class SphereSimRobotTest : public SphereSimTest,

@@ -23,12 +23,14 @@ namespace {
 
 using spherical_robots::config::loadTerrainConfig;
 using spherical_robots::config::makePath;
+using spherical_robots::config::makePursuitController;
 using spherical_robots::config::makeSurface;
 using spherical_robots::config::SurfaceSpec;
 using spherical_robots::config::sphereRadiusFromUrdf;
 using spherical_robots::config::TerrainConfig;
 using spherical_robots::config::YamlParameterSource;
 using spherical_robots::terrain::PursuitGains;
+using spherical_robots::terrain::PursuitLaw;
 using spherical_robots::terrain::RobotType;
 
 constexpr double kPi = 3.14159265358979323846;
@@ -107,6 +109,60 @@ TEST(TerrainConfig, MissingKeysKeepTheDocumentedDefaults) {
     expectDocumentedScenario(c);
     EXPECT_EQ(c.gains.size(), 4u);
     expectDocumentedGains(c);
+  }
+}
+
+// The smooth law's gains as docs/conventions.md ("The smooth law") documents them.
+void expectDocumentedSmoothGains(const TerrainConfig& c) {
+  ASSERT_EQ(c.smooth_gains.size(), 4u);
+  for (const auto& [type, g] : c.smooth_gains) {
+    SCOPED_TRACE(toString(type));
+    const bool steers = type == RobotType::RollingAndTurning || type == RobotType::RollingAndSteering;
+    const bool rs = type == RobotType::RollingAndSteering;
+    EXPECT_EQ(g.window, steers ? 1.0 : 0.5);
+    EXPECT_EQ(g.lead, type == RobotType::RollingAndTurning ? 0.25 : rs ? 0.5 : 0.0);
+    EXPECT_EQ(g.approach_speed, rs ? 0.2 : 0.5);
+    EXPECT_EQ(g.along_gain, 4.0);
+    EXPECT_EQ(g.cross_gain, rs ? 1.5 : 3.0);
+    EXPECT_EQ(g.heading_gain, type == RobotType::RollingAndTurning ? 4.0 : 2.0);
+    EXPECT_EQ(g.tilt_gain, 3.0);
+    EXPECT_EQ(g.max_tilt, 0.8);
+    EXPECT_EQ(g.max_tilt_rate, 1.0);
+    EXPECT_EQ(g.min_speed, rs ? 0.05 : 0.01);
+  }
+}
+
+TEST(TerrainConfig, ShippedAndMissingSmoothGainsAreTheDocumentedOnes) {
+  expectDocumentedSmoothGains(loadTerrainConfig(YamlParameterSource(kShipped)));
+  expectDocumentedSmoothGains(loadText("{}\n"));
+  const TerrainConfig c = loadText("terrain:\n  smooth_gains:\n    RS: {heading_gain: 2.5}\n");
+  EXPECT_EQ(c.smooth_gains.at(RobotType::RollingAndSteering).heading_gain, 2.5);
+  EXPECT_EQ(c.smooth_gains.at(RobotType::RollingAndSteering).cross_gain, 1.5);  // RS's own
+  EXPECT_EQ(c.smooth_gains.at(RobotType::RollingAndTurning).heading_gain, 4.0);
+}
+
+TEST(TerrainConfig, BadSmoothGainsAreRejectedNamingTheKeyTheGainAndTheFile) {
+  const TempYaml file("terrain:\n  smooth_gains:\n    RT: {heading_gain: -4}\n");
+  EXPECT_INVALID_ARGUMENT(loadTerrainConfig(YamlParameterSource(file.path())),
+                          "terrain/smooth_gains/RT", "heading_gain", "got -4", file.path());
+  // An RS tilt set-point bound at or past the tilt limit is caught where both are known.
+  const TerrainConfig c = loadText("terrain:\n  smooth_gains:\n    RS: {max_tilt: 1.2}\n");
+  EXPECT_INVALID_ARGUMENT(
+      makePursuitController(PursuitLaw::Smooth, RobotType::RollingAndSteering, c, 0.2),
+      "max_tilt", "1.2", "limit");
+  EXPECT_NO_THROW(makePursuitController(PursuitLaw::Paper, RobotType::RollingAndSteering, c, 0.2));
+}
+
+TEST(MakePursuitController, BuildsTheNamedLawWithTheScenariosGains) {
+  const TerrainConfig c = loadTerrainConfig(YamlParameterSource(kShipped));
+  for (RobotType type : {RobotType::ThreeAxisRolling, RobotType::RollingAndSteering}) {
+    const auto paper = makePursuitController(PursuitLaw::Paper, type, c, 0.2);
+    const auto smooth = makePursuitController(PursuitLaw::Smooth, type, c, 0.2);
+    EXPECT_EQ(paper->type(), type);
+    EXPECT_EQ(smooth->type(), type);
+    EXPECT_EQ(paper->velocityWindow().length, 0.0);  // eqs 55-58 take p_d'(t)
+    EXPECT_EQ(smooth->velocityWindow().length, c.smooth_gains.at(type).window);
+    EXPECT_EQ(smooth->velocityWindow().lead, c.smooth_gains.at(type).lead);
   }
 }
 

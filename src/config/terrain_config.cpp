@@ -37,6 +37,32 @@ terrain::PursuitGains loadGains(const ParameterSource& source, terrain::RobotTyp
   return gains;
 }
 
+// The smooth law's gains, checked with the key in the message; the ranges are the core's.
+terrain::SmoothPursuitGains loadSmoothGains(const ParameterSource& source, terrain::RobotType type) {
+  const std::string prefix = kRoot + "smooth_gains/" + terrain::toString(type) + "/";
+  terrain::SmoothPursuitGains gains = terrain::defaultSmoothGains(type);
+  const auto gain = [&](const char* name, double& value) {
+    value = finiteNumber(source, prefix + name, value);
+  };
+  gain("window", gains.window);
+  gain("lead", gains.lead);
+  gain("approach_speed", gains.approach_speed);
+  gain("along_gain", gains.along_gain);
+  gain("cross_gain", gains.cross_gain);
+  gain("heading_gain", gains.heading_gain);
+  gain("tilt_gain", gains.tilt_gain);
+  gain("max_tilt_rate", gains.max_tilt_rate);
+  gain("max_tilt", gains.max_tilt);
+  gain("min_speed", gains.min_speed);
+  try {
+    terrain::validate(gains);
+  } catch (const std::invalid_argument& error) {
+    throw std::invalid_argument(source.origin() + ": " + prefix.substr(0, prefix.size() - 1) +
+                                ": " + error.what());
+  }
+  return gains;
+}
+
 }  // namespace
 
 TerrainConfig loadTerrainConfig(const ParameterSource& source) {
@@ -67,8 +93,20 @@ TerrainConfig loadTerrainConfig(const ParameterSource& source) {
        {terrain::RobotType::ThreeAxisRolling, terrain::RobotType::TwoAxisRolling,
         terrain::RobotType::RollingAndTurning, terrain::RobotType::RollingAndSteering}) {
     config.gains[type] = loadGains(source, type, k_e);
+    config.smooth_gains[type] = loadSmoothGains(source, type);
   }
   return config;
+}
+
+std::unique_ptr<terrain::PursuitController> makePursuitController(terrain::PursuitLaw law,
+                                                                  terrain::RobotType type,
+                                                                  const TerrainConfig& config,
+                                                                  double radius) {
+  if (law == terrain::PursuitLaw::Paper) {
+    return std::make_unique<terrain::PurePursuitController>(type, config.gains.at(type), radius);
+  }
+  return std::make_unique<terrain::SmoothPursuitController>(type, config.smooth_gains.at(type),
+                                                            radius, config.tilt_limit);
 }
 
 std::unique_ptr<terrain::Surface> makeSurface(const SurfaceSpec& spec) {

@@ -255,7 +255,8 @@ void HardwareInterfaceSimRos::eStopCallback(const std_msgs::Bool::ConstPtr& msg)
   updater_.force_update();
 }
 
-void HardwareInterfaceSimRos::timerCallback(const ros::TimerEvent&) {
+void HardwareInterfaceSimRos::timerCallback(const ros::TimerEvent& event) {
+  timer_guard_->observe(event);
   const ros::Time now = ros::Time::now();
   followClock(now);
   actuators_.update(now.toSec());

@@ -42,8 +42,9 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
              positiveParam(pnh, "input_timeout", 0.5)),
       updater_(nh, pnh) {
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
-  controller_ = std::make_unique<terrain::PurePursuitController>(
-      type_, terrain_config.gains.at(type_), radius_);
+  controller_ = config::makePursuitController(
+      parsedParam(pnh, "law", "smooth", terrain::pursuitLawFromString), type_, terrain_config,
+      radius_);
 
   command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", 10);
   state_sub_ = nh.subscribe("terrain_state", 10, &PurePursuitRos::onTerrainState, this);
@@ -120,7 +121,8 @@ void PurePursuitRos::warnIgnoredOnce(const std::vector<std::string>& fields) {
   }
 }
 
-void PurePursuitRos::onTimer(const ros::TimerEvent&) {
+void PurePursuitRos::onTimer(const ros::TimerEvent& event) {
+  timer_guard_->observe(event);
   const ros::Time now = ros::Time::now();
   const double jump = clock_.jumpOver(now.toSec());
   if (jump != 0.0) timer_guard_->reset();
@@ -146,9 +148,10 @@ terrain::DriveRates PurePursuitRos::track(const ros::Time& now) {
   if (!geometry_ || !input_.fresh(now)) return {};
   if (start_.isZero()) start_ = now;
   const terrain::DesiredPoint desired =
-      terrain::liftOntoSurface(*path_, *surface_, (now - start_).toSec());
+      terrain::liftOntoSurface(*path_, *surface_, (now - start_).toSec(),
+                               controller_->velocityWindow());
   const terrain::TrackingError error = terrain::trackingError(*geometry_, desired.position);
-  const terrain::DriveRates rates = controller_->command(error, desired.velocity);
+  const terrain::DriveRates rates = controller_->command(*geometry_, tilt_, error, desired.velocity);
   // Nothing non-finite is published; onTimer() commands zero instead.
   requireFinite(error.norm, "|e_t|");
   requireFinite(error.zeta, "zeta");

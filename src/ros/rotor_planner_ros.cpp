@@ -363,7 +363,8 @@ void RotorPlannerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat
   odom_input_.report(status, ros::Time::now());
 }
 
-void RotorPlannerRos::onCommandTimer(const ros::TimerEvent&) {
+void RotorPlannerRos::onCommandTimer(const ros::TimerEvent& event) {
+  timer_guard_->observe(event);
   const ros::Time now = ros::Time::now();
   const double jump = clock_.jumpOver(now.toSec());
   if (jump != 0.0) timer_guard_->reset();

@@ -35,7 +35,10 @@ SimClock::SimClock(ros::NodeHandle nh, double step, double speedup, Tick tick, R
   }
   if (!ownsClock()) {
     timer_ = nh.createTimer(ros::Duration(step_),
-                            [this](const ros::TimerEvent& event) { onTick(event.current_real); });
+                            [this](const ros::TimerEvent& event) {
+                              timer_guard_->observe(event);
+                              onTick(event.current_real);
+                            });
     timer_guard_ = std::make_unique<TimerJumpGuard>(
         nh, std::vector<std::pair<ros::Timer*, double>>{{&timer_, step_}}, kMaxClockStep);
     ROS_INFO_STREAM("Stepping every " << step_ << " s of ROS time ("

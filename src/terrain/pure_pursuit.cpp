@@ -1,7 +1,6 @@
 #include "spherical_robots/terrain/pure_pursuit.hpp"
 #include "spherical_robots/core/validation.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -33,29 +32,16 @@ void validate(const PursuitGains& gains) {
   }
 }
 
-// Eq 53, and eq 54 signed: atan2 of e_t's components along l and h.
-TrackingError trackingError(const ContactGeometry& geometry, const Eigen::Vector3d& desired) {
-  if (!desired.allFinite()) throw std::invalid_argument("tracking error: desired point not finite");
-  TrackingError result;
-  result.error = desired - geometry.contact_point;
-  result.norm = result.error.norm();
-  const double along_heading = result.error.dot(geometry.heading_frame.col(0));
-  const double along_left = result.error.dot(geometry.heading_frame.col(1));
-  // Along n the direction in the plane is round-off, not information. hypot(a, b) is never below
-  // max(|a|, |b|), so the larger component alone settles the usual case without the slow hypot.
-  const double round_off = 1e-12 * result.norm;
-  if (std::max(std::abs(along_heading), std::abs(along_left)) > round_off ||
-      std::hypot(along_heading, along_left) > round_off) {
-    result.zeta = std::atan2(along_left, along_heading);
-  }
-  return result;
-}
-
 PurePursuitController::PurePursuitController(RobotType type, const PursuitGains& gains,
                                              double radius)
     : type_(type), gains_(gains), radius_(radius) {
   validate(gains);
   requirePositive(radius, "pure pursuit: radius [m]");
+}
+
+DriveRates PurePursuitController::command(const ContactGeometry&, double, const TrackingError& error,
+                                          const Eigen::Vector3d& desired_velocity) const {
+  return command(error, desired_velocity);
 }
 
 DriveRates PurePursuitController::command(const TrackingError& error,

@@ -34,6 +34,12 @@ PathPoint CirclePath::at(double t) const {
   return point;
 }
 
+Eigen::Vector2d CirclePath::meanVelocity(double t, double window) const {
+  requirePositive(window, "circle path: mean velocity window [s]");
+  const double half_turn = 0.5 * angular_rate_ * window;
+  return at(t).velocity * (std::sin(half_turn) / half_turn);
+}
+
 double CirclePath::period() const { return 2.0 * M_PI / std::abs(angular_rate_); }
 
 std::string CirclePath::describe() const {
@@ -88,10 +94,25 @@ std::string DiamondPath::describe() const {
   return text.str();
 }
 
-DesiredPoint liftOntoSurface(const ReferencePath& path, const Surface& surface, double t) {
+Eigen::Vector2d ReferencePath::meanVelocity(double t, double window) const {
+  requirePositive(window, "reference path: mean velocity window [s]");
+  return (position(t + 0.5 * window) - position(t - 0.5 * window)) / window;
+}
+
+DesiredPoint liftOntoSurface(const ReferencePath& path, const Surface& surface, double t,
+                             const VelocityWindow& window) {
+  if (!std::isfinite(window.lead) || window.lead < 0.0) {
+    rejectNumber(window.lead, "reference path: velocity window lead [s]", "finite and >= 0");
+  }
+  if (!std::isfinite(window.length) || window.length < 0.0) {
+    rejectNumber(window.length, "reference path: velocity window length [s]", "finite and >= 0");
+  }
   const PathPoint planar = path.at(t);
   const Eigen::Vector2d& xy = planar.position;
-  const Eigen::Vector2d& xy_rate = planar.velocity;
+  const Eigen::Vector2d xy_rate =
+      window.length > 0.0 ? path.meanVelocity(t + window.lead, window.length)
+      : window.lead > 0.0 ? path.velocity(t + window.lead)
+                          : planar.velocity;
   const SurfacePoint ground = surface.evaluate(xy.x(), xy.y());
   DesiredPoint desired;
   desired.position = {xy.x(), xy.y(), ground.height};

@@ -30,7 +30,7 @@ TerrainState checkedResult(const TerrainKinematics& kinematics, const OdeState& 
 }  // namespace
 
 TerrainSimulation::TerrainSimulation(const TerrainKinematics& kinematics,
-                                     const PurePursuitController& controller,
+                                     const PursuitController& controller,
                                      const ReferencePath& path, const TerrainState& initial)
     : kinematics_(kinematics), controller_(controller), path_(path),
       state_(kinematics.constrain(initial)) {
@@ -46,13 +46,16 @@ TerrainSimulation::TerrainSimulation(const TerrainKinematics& kinematics,
 TerrainSample TerrainSimulation::evaluate(const TerrainState& state, double t) const {
   TerrainSample sample{t, state, kinematics_.geometry(state), desiredAt(t), {}, {}};
   sample.error = trackingError(sample.geometry, sample.desired.position);
-  sample.rates = realisedCommand(state, sample.error, sample.desired);
+  sample.rates = realisedCommand(state, sample.geometry, sample.error, sample.desired);
   return sample;
 }
 
-DriveRates TerrainSimulation::realisedCommand(const TerrainState& state, const TrackingError& error,
+DriveRates TerrainSimulation::realisedCommand(const TerrainState& state,
+                                              const ContactGeometry& geometry,
+                                              const TrackingError& error,
                                               const DesiredPoint& desired) const {
-  return kinematics_.realisedRates(state, controller_.command(error, desired.velocity));
+  return kinematics_.realisedRates(
+      state, controller_.command(geometry, state.phi, error, desired.velocity));
 }
 
 const DesiredPoint& TerrainSimulation::desiredAt(double t) const {
@@ -61,7 +64,7 @@ const DesiredPoint& TerrainSimulation::desiredAt(double t) const {
   }
   auto& slot = desired_cache_[desired_cache_next_];
   desired_cache_next_ = (desired_cache_next_ + 1) % desired_cache_.size();
-  slot = {t, liftOntoSurface(path_, kinematics_.surface(), t)};
+  slot = {t, liftOntoSurface(path_, kinematics_.surface(), t, controller_.velocityWindow())};
   return slot.second;
 }
 
@@ -74,7 +77,7 @@ void TerrainSimulation::step(double dt) {
     const ContactGeometry geometry = kinematics_.geometry(state);
     const DesiredPoint& desired = desiredAt(t);
     const DriveRates rates =
-        realisedCommand(state, trackingError(geometry, desired.position), desired);
+        realisedCommand(state, geometry, trackingError(geometry, desired.position), desired);
     dxdt = toOde(kinematics_.realisedStateRate(state, geometry, rates));
   };
   OdeState x = toOde(state_);

@@ -50,6 +50,7 @@ TerrainRunSettings settingsFrom(const ParsedOptions& options) {
   settings.robot = terrain::robotTypeFromString(options.text("robot"));
   settings.path = options.text("path");
   settings.model = terrain::contactModelFromString(options.text("model"));
+  settings.law = terrain::pursuitLawFromString(options.text("law"));
   settings.duration = options.number("duration");
   settings.dt = options.number("dt");
   settings.log_rate = options.number("log-rate");
@@ -67,10 +68,10 @@ int runTerrainCommand(const ParsedOptions& options, std::ostream& out) {
 }
 
 const char* const kDescription =
-    R"(The run starts at the origin with psi = phi = 0 and integrates the closed loop (pure
-pursuit evaluated at every RK4 stage) with a fixed step. The scenario (surface, paths, gains,
-RS tilt limit) is DIR/config/terrain.yaml; the sphere's radius is the base_link sphere of
-DIR/urdf/terrain_robot.urdf.
+    R"(The run starts at the origin with psi = phi = 0 and integrates the closed loop (the tracking
+law evaluated at every RK4 stage) with a fixed step. The scenario (surface, paths, the gains of
+both laws, RS tilt limit) is DIR/config/terrain.yaml; the sphere's radius is the base_link
+sphere of DIR/urdf/terrain_robot.urdf.
 
 CSV columns (SI units, radians; one row every 1/log-rate s from t = 0 through the duration):
   t             time [s]
@@ -87,10 +88,10 @@ CSV columns (SI units, radians; one row every 1/log-rate s from t = 0 through th
   turn_rate     realised psi_dot [rad/s] about n; 0 for 2R; RS: -alpha_dot sin(phi) (eq 44)
 Numbers are written in the shortest form that reads back as the same double.
 
-stdout: one line: robot, path, model, the first logged time with |e_t| < 0.1 m ("never" if
+stdout: one line: robot, path, model, law, the first logged time with |e_t| < 0.1 m ("never" if
 none) and the mean and max |e_t| over the logged rows with t >= 40 s.
 
-Exit status: 0 success; 2 usage error (unknown option, unknown robot/path/model, malformed
+Exit status: 0 success; 2 usage error (unknown option, unknown robot/path/model/law, malformed
 number, missing option); 4 invalid input (non-finite or out-of-range number, duration or log
 period not a whole number of steps, unreadable config, a radius that breaks single-point
 contact, a run that diverges): one-line error on stderr and no output file.
@@ -133,8 +134,7 @@ TerrainRun::TerrainRun(const TerrainRunSettings& settings) : settings_(settings)
   path_ = config::makePath(settings.path, scenario);
   kinematics_ = std::make_unique<terrain::TerrainKinematics>(*surface_, settings.robot, radius,
                                                              settings.model, scenario.tilt_limit);
-  controller_ = std::make_unique<terrain::PurePursuitController>(
-      settings.robot, scenario.gains.at(settings.robot), radius);
+  controller_ = config::makePursuitController(settings.law, settings.robot, scenario, radius);
 }
 
 terrain::TrackingSummary TerrainRun::simulate(std::ostream* csv) const {
@@ -168,7 +168,8 @@ terrain::TrackingSummary TerrainRun::simulate(std::ostream* csv) const {
 std::string TerrainRun::describe(const terrain::TrackingSummary& summary) const {
   std::ostringstream line;
   line << "robot " << terrain::toString(settings_.robot) << ", path " << settings_.path
-       << ", model " << terrain::toString(settings_.model) << ": |e_t| < " << summary.threshold()
+       << ", model " << terrain::toString(settings_.model) << ", law "
+       << terrain::toString(settings_.law) << ": |e_t| < " << summary.threshold()
        << " m ";
   if (std::isnan(summary.timeToConverge())) {
     line << "never";
@@ -214,6 +215,14 @@ Subcommand terrainCommand() {
        terrain::toString(defaults.model),
        false,
        {"paper", "rolling"}},
+      {"law",
+       "NAME",
+       "Tracking law: paper (eqs 55-58 as printed, signs corrected; the default, because this\n"
+       "command reproduces the paper, whose laws chatter once converged: docs/results.md) or\n"
+       "smooth (docs/conventions.md: smooth commands at convergence; the stacks' default).",
+       terrain::toString(defaults.law),
+       false,
+       {"paper", "smooth"}},
       {"duration",
        "SECONDS",
        "Simulated time [s], >= 0; a whole number of log periods.",

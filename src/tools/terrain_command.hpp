@@ -7,7 +7,7 @@
 #include <string>
 
 #include "sphere_sim_cli.hpp"
-#include "spherical_robots/terrain/pure_pursuit.hpp"
+#include "spherical_robots/terrain/pursuit_law.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/robot_type.hpp"
 #include "spherical_robots/terrain/surface.hpp"
@@ -21,13 +21,16 @@ struct TerrainRunSettings {
   terrain::RobotType robot = terrain::RobotType::ThreeAxisRolling;
   std::string path = "circle";  ///< "circle" | "diamond"
   terrain::ContactModel model = terrain::ContactModel::Paper;
+  /// The paper's law by default: the subcommand reproduces the paper.
+  terrain::PursuitLaw law = terrain::PursuitLaw::Paper;
   double duration = 200.0;  ///< [s], >= 0, a whole number of log periods
   double dt = 0.005;        ///< RK4 step [s] > 0
   double log_rate = 10.0;   ///< CSV rows per second [Hz]; 1/log_rate a whole number of steps
   std::string config_dir;   ///< holds config/terrain.yaml and urdf/terrain_robot.urdf
 };
 
-/// A checked, ready-to-run scenario: the surface, path, kinematics and controller that
+/// A checked, ready-to-run scenario: the surface, path, kinematics and controller (of the
+/// settings' law) that
 /// config/terrain.yaml and urdf/terrain_robot.urdf describe for the settings' robot.
 class TerrainRun {
  public:
@@ -44,7 +47,8 @@ class TerrainRun {
   /// @throw std::runtime_error if the state stops being finite.
   terrain::TrackingSummary simulate(std::ostream* csv) const;
 
-  /// "robot 3R, path circle, model paper: |e_t| < 0.1 m at t = ... s; for t >= 40 s mean ..."
+  /// "robot 3R, path circle, model paper, law paper: |e_t| < 0.1 m at t = ... s; for t >= 40 s
+  /// mean ..."
   std::string describe(const terrain::TrackingSummary& summary) const;
 
  private:
@@ -54,7 +58,7 @@ class TerrainRun {
   std::unique_ptr<terrain::Surface> surface_;
   std::unique_ptr<terrain::ReferencePath> path_;
   std::unique_ptr<terrain::TerrainKinematics> kinematics_;
-  std::unique_ptr<terrain::PurePursuitController> controller_;
+  std::unique_ptr<terrain::PursuitController> controller_;
 };
 
 /// The subcommand's option table and run function, for runSphereSim.

@@ -1,5 +1,6 @@
 #pragma once
-// The terrain scenario's parameters (config/terrain.yaml): surface, paths, gains, RS tilt limit.
+// The terrain scenario's parameters (config/terrain.yaml): surface, paths, the gains of both
+// tracking laws, RS tilt limit.
 
 #include <map>
 #include <memory>
@@ -7,8 +8,10 @@
 
 #include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/terrain/pure_pursuit.hpp"
+#include "spherical_robots/terrain/pursuit_law.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/robot_type.hpp"
+#include "spherical_robots/terrain/smooth_pursuit.hpp"
 #include "spherical_robots/terrain/surface.hpp"
 
 namespace spherical_robots::config {
@@ -29,12 +32,20 @@ struct TerrainConfig {
   double diamond_half_diagonal = 2.0; ///< [m]
   double diamond_speed = 0.1;         ///< [m/s]
   double tilt_limit = 1.0471975511965976;  ///< RS |phi| limit [rad], pi/3
-  std::map<terrain::RobotType, terrain::PursuitGains> gains;
+  std::map<terrain::RobotType, terrain::PursuitGains> gains;  ///< the paper's law (eqs 55-58)
+  std::map<terrain::RobotType, terrain::SmoothPursuitGains> smooth_gains;  ///< the smooth law
 };
 
 /// Reads keys under "terrain/" (see config/terrain.yaml); absent keys keep their defaults.
 /// @throw std::invalid_argument naming the key, its value and the source on a bad value.
 TerrainConfig loadTerrainConfig(const ParameterSource& source);
+
+/// The law's controller for a robot of radius [m] with this scenario's gains and tilt limit.
+/// @throw std::invalid_argument on bad gains or radius.
+std::unique_ptr<terrain::PursuitController> makePursuitController(terrain::PursuitLaw law,
+                                                                  terrain::RobotType type,
+                                                                  const TerrainConfig& config,
+                                                                  double radius);
 
 /// @throw std::invalid_argument on an unknown type or bad numbers.
 std::unique_ptr<terrain::Surface> makeSurface(const SurfaceSpec& spec);

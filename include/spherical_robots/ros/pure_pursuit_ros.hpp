@@ -32,8 +32,9 @@ namespace spherical_robots {
 /// In the node handle's namespace: robot_description (URDF, for the radius) and terrain/...
 /// (config/terrain.yaml: surface, paths, gains).
 ///
-/// tracking: subscribes terrain_state; every 1/rate s of ROS time it commands the
-/// PurePursuitController towards liftOntoSurface(path, surface, t), t = ROS time since the first
+/// tracking: subscribes terrain_state; every 1/rate s of ROS time it commands the ~law
+/// (smooth | paper, "smooth": terrain::PursuitLaw) towards liftOntoSurface(path, surface, t,
+/// the law's window), t = ROS time since the first
 /// fresh terrain_state (so the reference waits for the plant), and publishes tracking_error,
 /// target and (latched, once) desired_path.
 /// teleop: subscribes cmd_vel (geometry_msgs/Twist), mapped by terrain::TeleopMapping (RS servos
@@ -65,7 +66,7 @@ class PurePursuitRos {
   double radius_;
   std::unique_ptr<terrain::Surface> surface_;
   std::unique_ptr<terrain::ReferencePath> path_;
-  std::unique_ptr<terrain::PurePursuitController> controller_;
+  std::unique_ptr<terrain::PursuitController> controller_;
 
   std::optional<terrain::ContactGeometry> geometry_;  ///< from the last good terrain_state
   double tilt_ = 0.0;                                 ///< RS phi from the last good terrain_state

@@ -4,9 +4,8 @@
 
 #include <Eigen/Core>
 
-#include "spherical_robots/terrain/reference_path.hpp"
+#include "spherical_robots/terrain/pursuit_law.hpp"
 #include "spherical_robots/terrain/robot_type.hpp"
-#include "spherical_robots/terrain/terrain_kinematics.hpp"
 
 namespace spherical_robots::terrain {
 
@@ -33,19 +32,8 @@ PursuitGains defaultGains(RobotType type);
 /// Throws std::invalid_argument naming the first gain that is non-finite or negative, or k_e <= 0.
 void validate(const PursuitGains& gains);
 
-/// The tracking error of eqs 53-54, with zeta signed.
-struct TrackingError {
-  Eigen::Vector3d error = Eigen::Vector3d::Zero();  ///< e_t = p_d - P0 [m] (eq 53)
-  double norm = 0.0;                                ///< |e_t| [m]
-  /// Angle [rad] in (-pi, pi] from h to e_t's projection on the tangent plane, right-handed
-  /// about n: positive when the target is to the left (eq 54 gives only its magnitude). 0 when
-  /// e_t has no component in the tangent plane (below 1e-12 |e_t|, i.e. round-off).
-  double zeta = 0.0;
-};
-
-TrackingError trackingError(const ContactGeometry& geometry, const Eigen::Vector3d& desired);
-
-class PurePursuitController {
+/// The paper's law (PursuitLaw::Paper).
+class PurePursuitController final : public PursuitController {
  public:
   /// @throw std::invalid_argument on bad gains or radius.
   PurePursuitController(RobotType type, const PursuitGains& gains, double radius);
@@ -54,7 +42,12 @@ class PurePursuitController {
   /// (feed-forward |p_d'| / R, eqs 55, 57, 58).
   DriveRates command(const TrackingError& error, const Eigen::Vector3d& desired_velocity) const;
 
-  RobotType type() const { return type_; }
+  /// The same: eqs 55-58 need neither the frame nor the tilt, and take p_d' at t itself.
+  DriveRates command(const ContactGeometry& geometry, double tilt, const TrackingError& error,
+                     const Eigen::Vector3d& desired_velocity) const override;
+  VelocityWindow velocityWindow() const override { return {}; }
+
+  RobotType type() const override { return type_; }
   const PursuitGains& gains() const { return gains_; }
 
  private:

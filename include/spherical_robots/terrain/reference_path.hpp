@@ -25,6 +25,9 @@ class ReferencePath {
   virtual PathPoint at(double t) const = 0;
   Eigen::Vector2d position(double t) const { return at(t).position; }
   Eigen::Vector2d velocity(double t) const { return at(t).velocity; }
+  /// The mean velocity [m/s] over [t - window/2, t + window/2], window [s] > 0: the chord
+  /// (position(t + window/2) - position(t - window/2)) / window.
+  virtual Eigen::Vector2d meanVelocity(double t, double window) const;
   /// Time [s] after which the path repeats.
   virtual double period() const = 0;
   virtual std::string describe() const = 0;
@@ -36,6 +39,8 @@ class CirclePath final : public ReferencePath {
   /// @param radius r [m] > 0, @param angular_rate w [rad/s] != 0. @throw std::invalid_argument
   CirclePath(double radius, double angular_rate);
   PathPoint at(double t) const override;
+  /// Closed form: velocity(t) sin(w window/2) / (w window/2).
+  Eigen::Vector2d meanVelocity(double t, double window) const override;
   double period() const override;
   std::string describe() const override;
 
@@ -59,12 +64,24 @@ class DiamondPath final : public ReferencePath {
   double speed_;
 };
 
+/// Which velocity of the reference a law wants: its mean over [t + lead - length/2,
+/// t + lead + length/2] [s]; {0, 0} is p_d'(t) itself.
+struct VelocityWindow {
+  double lead = 0.0;    ///< [s] >= 0: how far ahead of t the window is centred
+  double length = 0.0;  ///< [s] >= 0
+};
+
 /// A desired point on the terrain and its 3D velocity.
 struct DesiredPoint {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< p_d [m]
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  ///< (x_d', y_d', f_x x_d' + f_y y_d') [m/s]
 };
 
-DesiredPoint liftOntoSurface(const ReferencePath& path, const Surface& surface, double t);
+/// p_d(t) on the surface, with the path's velocity over window (ReferencePath::meanVelocity; by
+/// default p_d'(t)) lifted onto the tangent plane at p_d(t): a law whose feed-forward must not
+/// jump at a corner, or must lead a turn, asks for a window.
+/// @throw std::invalid_argument on a non-finite t or a negative or non-finite window.
+DesiredPoint liftOntoSurface(const ReferencePath& path, const Surface& surface, double t,
+                             const VelocityWindow& window = {});
 
 }  // namespace spherical_robots::terrain

@@ -1,13 +1,13 @@
 #pragma once
 // Closed-loop batch run of a terrain robot: classical fixed-step RK4 (Boost.Odeint) with the
-// pure-pursuit controller evaluated at every stage (continuous-time feedback).
+// tracking law (paper or smooth) evaluated at every stage (continuous-time feedback).
 
 #include <Eigen/Geometry>
 #include <array>
 #include <limits>
 #include <utility>
 
-#include "spherical_robots/terrain/pure_pursuit.hpp"
+#include "spherical_robots/terrain/pursuit_law.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
 
@@ -26,7 +26,7 @@ struct TerrainSample {
 class TerrainSimulation {
  public:
   /// The kinematics, controller and path must outlive the simulation.
-  TerrainSimulation(const TerrainKinematics& kinematics, const PurePursuitController& controller,
+  TerrainSimulation(const TerrainKinematics& kinematics, const PursuitController& controller,
                     const ReferencePath& path, const TerrainState& initial);
 
   /// Advances by dt [s] > 0 with one RK4 step. @throw std::invalid_argument on a bad dt,
@@ -41,15 +41,16 @@ class TerrainSimulation {
   TerrainSample evaluate(const TerrainState& state, double t) const;
 
  private:
-  /// p_d(t), remembered for the two latest times: RK4 asks for t + dt/2 twice and for t + dt
-  /// again at the next step's start.
+  /// p_d(t) with the velocity the controller wants (over its window), remembered for
+  /// the two latest times: RK4 asks for t + dt/2 twice and for t + dt again at the next step's
+  /// start.
   const DesiredPoint& desiredAt(double t) const;
   /// The controller's command for this error, as the robot at this state realises it.
-  DriveRates realisedCommand(const TerrainState& state, const TrackingError& error,
-                             const DesiredPoint& desired) const;
+  DriveRates realisedCommand(const TerrainState& state, const ContactGeometry& geometry,
+                             const TrackingError& error, const DesiredPoint& desired) const;
 
   const TerrainKinematics& kinematics_;
-  const PurePursuitController& controller_;
+  const PursuitController& controller_;
   const ReferencePath& path_;
   TerrainState state_;
   double t_ = 0.0;

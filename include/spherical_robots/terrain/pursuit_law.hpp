@@ -1,0 +1,57 @@
+#pragma once
+// What every terrain tracking law shares: the choice between them, the tracking error of eqs
+// 53-54, and the interface through which the batch run and the controller node drive either.
+
+#include <Eigen/Core>
+#include <string>
+
+#include "spherical_robots/terrain/reference_path.hpp"
+#include "spherical_robots/terrain/robot_type.hpp"
+#include "spherical_robots/terrain/terrain_kinematics.hpp"
+
+namespace spherical_robots::terrain {
+
+/// Which law turns the tracking error into drive rates.
+enum class PursuitLaw {
+  Paper,   ///< eqs 55-58 as printed (signs per docs/conventions.md): PurePursuitController
+  Smooth,  ///< docs/conventions.md, "The smooth law": SmoothPursuitController
+};
+
+/// "paper" | "smooth". @throw std::invalid_argument naming the value and the allowed ones.
+PursuitLaw pursuitLawFromString(const std::string& name);
+std::string toString(PursuitLaw law);
+
+/// The tracking error of eqs 53-54, with zeta signed.
+struct TrackingError {
+  Eigen::Vector3d error = Eigen::Vector3d::Zero();  ///< e_t = p_d - P0 [m] (eq 53)
+  double norm = 0.0;                                ///< |e_t| [m]
+  /// Angle [rad] in (-pi, pi] from h to e_t's projection on the tangent plane, right-handed
+  /// about n: positive when the target is to the left (eq 54 gives only its magnitude). 0 when
+  /// e_t has no component in the tangent plane (below 1e-12 |e_t|, i.e. round-off).
+  double zeta = 0.0;
+};
+
+TrackingError trackingError(const ContactGeometry& geometry, const Eigen::Vector3d& desired);
+
+/// A tracking law for one robot type. Stateless: the command is a function of the robot's state
+/// and the reference at one instant, so the batch run can evaluate it at every RK stage.
+class PursuitController {
+ public:
+  virtual ~PursuitController() = default;
+
+  virtual RobotType type() const = 0;
+
+  /// Which of the reference's velocities the law's feed-forward takes (liftOntoSurface).
+  virtual VelocityWindow velocityWindow() const = 0;
+
+  /// Drive-rate set-points [rad/s].
+  /// @param geometry the robot's contact geometry; @param tilt the RS tilt phi [rad] (0 for the
+  /// other types); @param error trackingError(geometry, p_d(t));
+  /// @param desired_velocity the path's velocity [m/s] over velocityWindow(), lifted.
+  /// @throw std::invalid_argument on non-finite input.
+  virtual DriveRates command(const ContactGeometry& geometry, double tilt,
+                             const TrackingError& error,
+                             const Eigen::Vector3d& desired_velocity) const = 0;
+};
+
+}  // namespace spherical_robots::terrain

@@ -1,0 +1,72 @@
+#pragma once
+// The smooth tracking law (docs/conventions.md, "The smooth law"): every type steers by one
+// desired velocity of the contact point, u = w + c(e_t), the reference's velocity w averaged over
+// a short window (the feed-forward |p_d'|/R of eqs 55/57/58, kept as a vector) plus a bounded
+// correction towards p_d. u is a smooth function of the state and time, so the commands are too;
+// eqs 55-58 instead steer by the direction zeta of e_t, which flips across +-pi as e_t -> 0.
+
+#include <Eigen/Core>
+
+#include "spherical_robots/terrain/pursuit_law.hpp"
+
+namespace spherical_robots::terrain {
+
+/// Gains of the smooth law; each type reads the ones it uses. The member defaults are 3R's and
+/// 2R's (and RS's for the tilt, which only RS has); defaultSmoothGains() gives every type's.
+struct SmoothPursuitGains {
+  /// tau [s] >= 0: w is the mean of the path's velocity over [t + lead - tau/2, t + lead + tau/2],
+  /// so a corner turns the feed-forward over tau instead of at once.
+  double window = 0.5;
+  /// [s] >= 0: for types that turn to follow u, 1 / heading_gain makes the heading loop exact
+  /// on an arc (u then leads the tangent by the angle the loop needs); 0 for 3R and 2R.
+  double lead = 0.0;
+  double approach_speed = 0.5;  ///< v_c [m/s] > 0: the bound of the correction c, far from p_d
+  /// K_a [1/s] > 0: the correction's slope at e_t = 0 along the path (the direction of w).
+  double along_gain = 4.0;
+  double cross_gain = 3.0;  ///< K_c [1/s] > 0: the same across the path
+  double heading_gain = 2.0;    ///< k_h [1/s] >= 0: turn rate per unit sine of u off h (3R, RT, RS)
+  double tilt_gain = 3.0;       ///< k_t [1/s] > 0: RS tilt servo
+  /// r_t [rad/s] > 0: the RS tilt rate's smooth bound, r_t tanh(k_t (phi* - phi) / r_t), so that
+  /// a swing of the tilt stays within what a tilt actuator's acceleration limit can follow.
+  double max_tilt_rate = 1.0;
+  double max_tilt = 0.8;        ///< [rad] > 0: bound of the RS tilt set-point, inside the limit
+  /// v_e [m/s] > 0: where |u| falls below it, the steering towards u fades out smoothly (u's
+  /// direction means nothing at u = 0).
+  double min_speed = 0.01;
+};
+
+/// The default gains of a robot type (docs/conventions.md, "The smooth law"; also in
+/// config/terrain.yaml): RT and RS lead their window by 1 / heading_gain and turn harder, RS
+/// approaches slower (its turns are slow) and keeps its steering regularised over more speed.
+SmoothPursuitGains defaultSmoothGains(RobotType type);
+
+/// Throws std::invalid_argument naming the first gain that is non-finite or out of its range,
+/// with its value and the limit.
+void validate(const SmoothPursuitGains& gains);
+
+class SmoothPursuitController final : public PursuitController {
+ public:
+  /// @param radius R [m] > 0; @param tilt_limit the RS tilt limit [rad], which
+  /// gains.max_tilt must stay below. @throw std::invalid_argument on bad gains, radius or limit.
+  SmoothPursuitController(RobotType type, const SmoothPursuitGains& gains, double radius,
+                          double tilt_limit);
+
+  RobotType type() const override { return type_; }
+  VelocityWindow velocityWindow() const override { return {gains_.lead, gains_.window}; }
+  const SmoothPursuitGains& gains() const { return gains_; }
+
+  /// The desired velocity u = w + c [m/s], before projection: c = v_c k / (v_c + |k|) with
+  /// k = K_c e_t + (K_a - K_c) (e_t . t) t, t = w / sqrt(|w|^2 + v_e^2) along the path.
+  Eigen::Vector3d desiredVelocity(const TrackingError& error,
+                                  const Eigen::Vector3d& desired_velocity) const;
+
+  DriveRates command(const ContactGeometry& geometry, double tilt, const TrackingError& error,
+                     const Eigen::Vector3d& desired_velocity) const override;
+
+ private:
+  RobotType type_;
+  SmoothPursuitGains gains_;
+  double radius_;
+};
+
+}  // namespace spherical_robots::terrain

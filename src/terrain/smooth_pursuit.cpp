@@ -1,0 +1,139 @@
+#include "spherical_robots/terrain/smooth_pursuit.hpp"
+#include "spherical_robots/core/validation.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace spherical_robots::terrain {
+namespace {
+
+void requireGain(double value, const char* name, const char* unit, bool zero_allowed) {
+  if (std::isfinite(value) && (value > 0.0 || (zero_allowed && value == 0.0))) return;
+  rejectNumber(value, std::string("smooth pursuit gain ") + name + " [" + unit + "]",
+               zero_allowed ? "finite and >= 0" : "finite and > 0");
+}
+
+[[noreturn]] void rejectInput(double tilt, const TrackingError& error,
+                              const Eigen::Vector3d& desired_velocity) {
+  std::ostringstream message;
+  message << "smooth pursuit: input not finite (|e_t| " << error.norm << " m, e_t ("
+          << error.error.transpose() << ") m, desired velocity (" << desired_velocity.transpose()
+          << ") m/s, tilt " << tilt << " rad)";
+  throw std::invalid_argument(message.str());
+}
+
+}  // namespace
+
+SmoothPursuitGains defaultSmoothGains(RobotType type) {
+  SmoothPursuitGains gains;
+  if (type == RobotType::RollingAndTurning) {
+    gains.window = 1.0;
+    gains.lead = 0.25;
+    gains.heading_gain = 4.0;
+  } else if (type == RobotType::RollingAndSteering) {
+    gains.window = 1.0;
+    gains.lead = 0.5;
+    gains.approach_speed = 0.2;
+    gains.cross_gain = 1.5;
+    gains.heading_gain = 2.0;
+    gains.min_speed = 0.05;
+  }
+  return gains;
+}
+
+void validate(const SmoothPursuitGains& gains) {
+  requireGain(gains.window, "window", "s", true);
+  requireGain(gains.lead, "lead", "s", true);
+  requireGain(gains.approach_speed, "approach_speed", "m/s", false);
+  requireGain(gains.along_gain, "along_gain", "1/s", false);
+  requireGain(gains.cross_gain, "cross_gain", "1/s", false);
+  requireGain(gains.heading_gain, "heading_gain", "1/s", true);
+  requireGain(gains.tilt_gain, "tilt_gain", "1/s", false);
+  requireGain(gains.max_tilt_rate, "max_tilt_rate", "rad/s", false);
+  requireGain(gains.max_tilt, "max_tilt", "rad", false);
+  requireGain(gains.min_speed, "min_speed", "m/s", false);
+}
+
+SmoothPursuitController::SmoothPursuitController(RobotType type, const SmoothPursuitGains& gains,
+                                                 double radius, double tilt_limit)
+    : type_(type), gains_(gains), radius_(radius) {
+  validate(gains);
+  requirePositive(radius, "smooth pursuit: radius [m]");
+  requirePositive(tilt_limit, "smooth pursuit: RS tilt limit [rad]");
+  if (type == RobotType::RollingAndSteering && !(gains.max_tilt < tilt_limit)) {
+    std::ostringstream message;
+    message << "smooth pursuit gain max_tilt [rad] must be below the RS tilt limit " << tilt_limit
+            << " rad, got " << gains.max_tilt;
+    throw std::invalid_argument(message.str());
+  }
+}
+
+// Linear in e_t near p_d (stiffer along the path, where only the speed responds, than across,
+// where types that must turn respond through their heading), never faster than v_c far from it.
+Eigen::Vector3d SmoothPursuitController::desiredVelocity(
+    const TrackingError& error, const Eigen::Vector3d& desired_velocity) const {
+  const Eigen::Vector3d along =
+      desired_velocity /
+      std::sqrt(desired_velocity.squaredNorm() + gains_.min_speed * gains_.min_speed);
+  const Eigen::Vector3d linear = gains_.cross_gain * error.error +
+                                 (gains_.along_gain - gains_.cross_gain) *
+                                     error.error.dot(along) * along;
+  return desired_velocity +
+         (gains_.approach_speed / (gains_.approach_speed + linear.norm())) * linear;
+}
+
+DriveRates SmoothPursuitController::command(const ContactGeometry& geometry, double tilt,
+                                            const TrackingError& error,
+                                            const Eigen::Vector3d& desired_velocity) const {
+  if (!std::isfinite(error.norm) || !error.error.allFinite() || !desired_velocity.allFinite() ||
+      !std::isfinite(tilt)) {
+    rejectInput(tilt, error, desired_velocity);
+  }
+  const Eigen::Vector3d velocity = desiredVelocity(error, desired_velocity);
+  // The robot moves in the tangent plane: u's components along h and l.
+  const double forward = velocity.dot(geometry.heading_frame.col(0));
+  const double leftward = velocity.dot(geometry.heading_frame.col(1));
+  // |u| in the plane, regularised: u's direction means nothing where |u| < v_e.
+  const double speed =
+      std::sqrt(forward * forward + leftward * leftward + gains_.min_speed * gains_.min_speed);
+  // Turn towards u: k_h times the sine of the angle from h to u.
+  const double turn = gains_.heading_gain * leftward / speed;
+  DriveRates rates;
+  switch (type_) {
+    case RobotType::ThreeAxisRolling:  // the contact point moves with R theta' h - R phi' l (eq 33)
+      rates.roll_rate = forward / radius_;
+      rates.lateral_rate = -leftward / radius_;
+      rates.turn_rate = turn;
+      break;
+    case RobotType::TwoAxisRolling:
+      rates.roll_rate = forward / radius_;
+      rates.lateral_rate = -leftward / radius_;
+      break;
+    case RobotType::RollingAndTurning:  // R theta' h only (eq 38): u's sideways part by turning
+      rates.roll_rate = forward / radius_;
+      rates.turn_rate = turn;
+      break;
+    case RobotType::RollingAndSteering: {
+      // RS turns only while it rolls (eq 44), so it rolls forward at the cardioid speed
+      // (|u| + u.h) / 2: u.h when heading along u, |u| / 2 with u abeam, 0 only with u straight
+      // behind; at R alpha' cos(phi) (eq 48). The turn comes from the tilt: eq 44 inverted,
+      // sin(phi*) = -turn / alpha', regularised where alpha' -> 0 and bounded smoothly by
+      // max_tilt; the tilt rate servos phi towards phi*, smoothly bounded by max_tilt_rate.
+      rates.roll_rate = 0.5 * (std::hypot(forward, leftward) + forward) / (radius_ * std::cos(tilt));
+      const double roll_floor = gains_.min_speed / radius_;
+      const double sine = -turn * rates.roll_rate /
+                          (rates.roll_rate * rates.roll_rate + roll_floor * roll_floor);
+      const double max_sine = std::sin(gains_.max_tilt);
+      const double target_tilt = std::asin(max_sine * std::tanh(sine / max_sine));
+      rates.lateral_rate =
+          gains_.max_tilt_rate *
+          std::tanh(gains_.tilt_gain * (target_tilt - tilt) / gains_.max_tilt_rate);
+      break;
+    }
+  }
+  return rates;
+}
+
+}  // namespace spherical_robots::terrain
