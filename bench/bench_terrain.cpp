@@ -1,5 +1,6 @@
 // The terrain batch run that `sphere_sim terrain` performs: 200 s at dt = 5 ms (40,000 RK4 steps,
-// 160,000 closed-loop evaluations) for each robot type.
+// 160,000 closed-loop evaluations) for each robot type and both tracking laws (the first
+// argument is the robot, the second the law: 0 paper, 1 smooth).
 //  * BM_SphereSimTerrain: the whole command in-process, through runSphereSim exactly as the
 //    executable runs it (config and URDF parsing, 2,001 CSV rows written to a temporary file).
 //  * BM_TerrainArithmetic: the same run without the CSV, to separate arithmetic from I/O.
@@ -28,16 +29,18 @@ using spherical_robots::sphere_sim::TerrainRunSettings;
 namespace terrain = spherical_robots::terrain;
 
 const char* const kRobots[] = {"3R", "2R", "RT", "RS"};
+const char* const kLaws[] = {"paper", "smooth"};
 
 void BM_SphereSimTerrain(benchmark::State& state) {
   const std::string robot = kRobots[state.range(0)];
-  state.SetLabel(robot + " circle 200 s");
+  const std::string law = kLaws[state.range(1)];
+  state.SetLabel(robot + " circle 200 s, law " + law);
   const std::string out = (std::filesystem::temp_directory_path() /
                            ("bench_terrain_" + std::to_string(::getpid()) + ".csv"))
                               .string();
   const std::vector<spherical_robots::sphere_sim::Subcommand> commands = {terrainCommand()};
-  const std::vector<std::string> args = {"terrain", "--robot", robot, "--path",
-                                         "circle",  "--out",   out};
+  const std::vector<std::string> args = {"terrain", "--robot", robot, "--path", "circle",
+                                         "--law",   law,      "--out", out};
   std::ostringstream summary;
   std::ostringstream errors;
   for (auto _ : state) {
@@ -49,19 +52,21 @@ void BM_SphereSimTerrain(benchmark::State& state) {
   }
   std::remove(out.c_str());
 }
-BENCHMARK(BM_SphereSimTerrain)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SphereSimTerrain)->ArgsProduct({{0, 1, 2, 3}, {0, 1}})->Unit(benchmark::kMillisecond);
 
 void BM_TerrainArithmetic(benchmark::State& state) {
   TerrainRunSettings settings;
   settings.robot = terrain::robotTypeFromString(kRobots[state.range(0)]);
+  settings.law = terrain::pursuitLawFromString(kLaws[state.range(1)]);
   settings.config_dir = spherical_robots::config::packageShareDirectory();
-  state.SetLabel(terrain::toString(settings.robot) + " circle 200 s, no CSV");
+  state.SetLabel(terrain::toString(settings.robot) + " circle 200 s, law " +
+                 terrain::toString(settings.law) + ", no CSV");
   const TerrainRun run(settings);
   for (auto _ : state) {
     benchmark::DoNotOptimize(run.simulate(nullptr).meanAfterSettling());
   }
 }
-BENCHMARK(BM_TerrainArithmetic)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TerrainArithmetic)->ArgsProduct({{0, 1, 2, 3}, {0, 1}})->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

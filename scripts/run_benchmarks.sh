@@ -4,7 +4,8 @@
 #     bench_freebot: FreeBOT IK over 10,000 random reachable targets of a 3-joint chain;
 #     bench_rotor: the two-rotor sphere's n-step planner (k 0..5 x n 1..5; target < 50 ms each);
 #  2. the CPU time (user + sys) of whole `sphere_sim terrain` processes, one 200 s circle run per
-#     robot type, run from the install space without --config, against a 10 ms target.
+#     robot type and tracking law, run from the install space without --config, against a 10 ms
+#     target (issue 13: with --law smooth).
 # usage: scripts/run_benchmarks.sh [REPEATS]    (processes per robot type, default 20)
 # SR_BIN_DIR=DIR uses sphere_sim, bench_terrain and bench_rotor from DIR instead of building the
 # workspace.
@@ -34,9 +35,10 @@ import os, statistics, subprocess, sys, tempfile
 sim, repeats = sys.argv[1], int(sys.argv[2])
 target_ms = 10.0
 out = os.path.join(tempfile.mkdtemp(prefix='sphere_sim_bench.'), 'run.csv')
-print('%-32s %12s %10s %10s %7s' % ('case', 'CPU ms/proc', 'min ms', 'target ms', 'ratio'))
-for robot in ('3R', '2R', 'RT', 'RS'):
-    args = [sim, 'terrain', '--robot', robot, '--path', 'circle', '--duration', '200', '--out', out]
+print('%-40s %12s %10s %10s %7s' % ('case', 'CPU ms/proc', 'min ms', 'target ms', 'ratio'))
+for robot, law in [(r, l) for l in ('smooth', 'paper') for r in ('3R', '2R', 'RT', 'RS')]:
+    args = [sim, 'terrain', '--robot', robot, '--path', 'circle', '--law', law, '--duration', '200',
+            '--out', out]
     cpu_ms = []
     for _ in range(repeats):
         child = subprocess.Popen(args, stdout=subprocess.DEVNULL)
@@ -45,8 +47,8 @@ for robot in ('3R', '2R', 'RT', 'RS'):
             sys.exit('%s failed with status %d' % (' '.join(args), os.waitstatus_to_exitcode(status)))
         cpu_ms.append(1000.0 * (usage.ru_utime + usage.ru_stime))
     median = statistics.median(cpu_ms)
-    print('%-32s %12.1f %10.1f %10.0f %7.2f' % ('terrain %s circle 200 s (median)' % robot, median,
-                                                min(cpu_ms), target_ms, median / target_ms))
+    print('%-40s %12.1f %10.1f %10.0f %7.2f' % ('terrain %s circle 200 s, %s (median)' % (robot, law),
+                                                median, min(cpu_ms), target_ms, median / target_ms))
 os.remove(out)
 os.rmdir(os.path.dirname(out))
 EOF

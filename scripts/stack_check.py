@@ -3,7 +3,7 @@
 launch/norma_stack.launch), headless, in simulated time.
 
 Runs in the stack's namespace (test/terrain_*.test, test/roller_*.test). Private params: ~mode
-(tracking | teleop | seam | roller | norma; see the classes) and ~frame_prefix. Times are simulated (the plant owns
+(tracking | teleop | seam | roller | norma | smoothness; see the classes) and ~frame_prefix. Times are simulated (the plant owns
 /clock), bounded by generous wall-clock deadlines; tolerances are generous where the machine's load
 matters (tracking error) and tight where the maths is exact (the contact point lies on the surface,
 which the plant never integrates off).
@@ -435,8 +435,56 @@ class NormaCheck(StackFixture):
         self.assertTrue(all(math.isfinite(v) for v in self.norma_states.last().q))
 
 
+class SmoothnessCheck(StackFixture):
+    """mode:=smoothness: issue 13's criteria on the set-points the controller sends (the default,
+    smooth law): after 40 s of simulated time, until ~until [s] (100), consecutive
+    actuators/command set-points of one actuator change sign (both above 0.01 rad/s) on fewer than
+    ~max_sign_changes (0.01) of the steps, and change by no more than the hardware interface's
+    max_acceleration allows over the time between them (at least the controller's 1/50 s)."""
+
+    FLOOR = 0.01  # [rad/s]
+    PERIOD = 0.02  # [s] the controller's
+
+    @classmethod
+    def setUpClass(cls):
+        super().setUpClass()
+        cls.errors = Recorder('tracking_error', TrackingError)
+        cls.commands = Recorder('actuators/command', JointState)
+        cls.max_acceleration = float(rospy.get_param('hardware_interface/max_acceleration'))
+
+    def test_01_set_points_are_smooth(self):
+        until = float(rospy.get_param('~until', 100.0))
+        wait_until(lambda: self.errors.count() > 0, 'the first tracking_error message')
+        start = self.errors.since(0)[0].header.stamp.to_sec()
+        wait_until(lambda: self.commands.count() > 0 and
+                   self.commands.last().header.stamp.to_sec() - start > until,
+                   '%.0f s of simulated tracking' % until)
+        steps = changes = 0
+        worst = 0.0  # the largest change / what the acceleration limit allows
+        messages = [m for m in self.commands.since(0) if m.header.stamp.to_sec() - start <= until]
+        for before, now in zip(messages, messages[1:]):
+            if now.header.stamp.to_sec() - start < SETTLE[0]:
+                continue
+            steps += 1
+            allowed = self.max_acceleration * max(
+                now.header.stamp.to_sec() - before.header.stamp.to_sec(), self.PERIOD)
+            previous = dict(zip(before.name, before.velocity))
+            flipped = False
+            for name, rate in zip(now.name, now.velocity):
+                old = previous.get(name, 0.0)
+                flipped |= old * rate < 0.0 and abs(old) > self.FLOOR and abs(rate) > self.FLOOR
+                worst = max(worst, abs(rate - old) / allowed)
+            changes += flipped
+        rospy.loginfo('set-points after %.0f s: %d sign changes in %d steps, largest change %.2f of '
+                      'the acceleration limit', SETTLE[0], changes, steps, worst)
+        self.assertGreater(steps, 1000)
+        self.assertLess(changes, float(rospy.get_param('~max_sign_changes', 0.01)) * steps)
+        self.assertLessEqual(worst, 1.0)
+
+
 if __name__ == '__main__':
     rospy.init_node(NAME)
     mode = rospy.get_param('~mode', 'tracking')
-    rostest.rosrun(PKG, NAME, {'teleop': TeleopCheck, 'seam': SeamCheck,
-                               'roller': RollerCheck, 'norma': NormaCheck}.get(mode, TrackingCheck))
+    rostest.rosrun(PKG, NAME, {'teleop': TeleopCheck, 'seam': SeamCheck, 'roller': RollerCheck,
+                               'norma': NormaCheck,
+                               'smoothness': SmoothnessCheck}.get(mode, TrackingCheck))

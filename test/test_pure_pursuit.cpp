@@ -16,6 +16,7 @@
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
 #include "spherical_robots/terrain/terrain_simulation.hpp"
 #include "expect_invalid_argument.hpp"
+#include "terrain_test_support.hpp"
 
 namespace {
 
@@ -26,36 +27,11 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kR = 0.2;
 
-const std::vector<RobotType> kAllTypes = {RobotType::ThreeAxisRolling, RobotType::TwoAxisRolling,
-                                          RobotType::RollingAndTurning,
-                                          RobotType::RollingAndSteering};
+const std::vector<RobotType>& kAllTypes = spherical_robots::test_support::kAllRobotTypes;
+using spherical_robots::test_support::testName;
 
-std::string typeName(RobotType t) {
-  const std::string s = toString(t);
-  return s == "3R" ? "ThreeR" : s == "2R" ? "TwoR" : s;
-}
-
-// Eq 10 and R_L = R_T Rz(psi) with R_T the minimal rotation z -> n, via Eigen (independent of the
-// package's tangentFrame).
-Eigen::Matrix3d headingFrameOf(const Eigen::Vector2d& g, double psi) {
-  const Eigen::Vector3d n = Eigen::Vector3d(-g.x(), -g.y(), 1.0).normalized();
-  const Eigen::Vector3d axis = Eigen::Vector3d::UnitZ().cross(n);
-  Eigen::Matrix3d rt = Eigen::Matrix3d::Identity();
-  if (axis.norm() > 0) {
-    rt = Eigen::AngleAxisd(std::atan2(axis.norm(), n.z()), axis.normalized()).toRotationMatrix();
-  }
-  return rt * Eigen::AngleAxisd(psi, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-}
-
-// A contact geometry built by hand on the plane with the given gradient through (1, 2, 0.5).
 ContactGeometry geometryOn(const Eigen::Vector2d& g, double psi) {
-  ContactGeometry geo;
-  geo.contact_point = Eigen::Vector3d(1.0, 2.0, 0.5);
-  geo.heading_frame = headingFrameOf(g, psi);
-  geo.centre = geo.contact_point + kR * geo.heading_frame.col(2);
-  geo.gradient = g;
-  geo.hessian = Eigen::Matrix2d::Zero();
-  return geo;
+  return spherical_robots::test_support::geometryOn(g, psi, kR);
 }
 
 // ------------------------------------------------------------------------------------------
@@ -235,7 +211,7 @@ TEST_P(CommandLaw, FeedForwardUsesTheFull3DSpeedOfTheDesiredPoint) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllTypes, CommandLaw, ::testing::ValuesIn(kAllTypes),
-                         [](const auto& info) { return typeName(info.param); });
+                         [](const auto& info) { return testName(info.param); });
 
 // ------------------------------------------------------------------------------------------
 // Closed-loop sign check: a target on the left (right) must pull every type to the left
@@ -300,7 +276,7 @@ std::vector<SideCase> sideCases() {
 
 INSTANTIATE_TEST_SUITE_P(AllTypesBothSides, ClosedLoopSign, ::testing::ValuesIn(sideCases()),
                          [](const auto& info) {
-                           return typeName(info.param.type) + (info.param.side > 0 ? "_Left" : "_Right");
+                           return testName(info.param.type) + (info.param.side > 0 ? "_Left" : "_Right");
                          });
 
 // ------------------------------------------------------------------------------------------

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "expect_invalid_argument.hpp"
+#include "terrain_test_support.hpp"
 #include "spherical_robots/terrain/pure_pursuit.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/smooth_pursuit.hpp"
@@ -27,14 +28,8 @@ constexpr double kR = 0.2;
 constexpr double kTiltLimit = kPi / 3;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-const std::vector<RobotType> kAllTypes = {RobotType::ThreeAxisRolling, RobotType::TwoAxisRolling,
-                                          RobotType::RollingAndTurning,
-                                          RobotType::RollingAndSteering};
-
-std::string typeName(RobotType t) {
-  const std::string s = toString(t);
-  return s == "3R" ? "ThreeR" : s == "2R" ? "TwoR" : s;
-}
+using spherical_robots::test_support::kAllRobotTypes;
+using spherical_robots::test_support::testName;
 
 // Distinct, non-default gains so that a law reading the wrong gain shows.
 SmoothPursuitGains testGains() {
@@ -52,21 +47,8 @@ SmoothPursuitGains testGains() {
   return g;
 }
 
-// A contact geometry on a tilted plane through (1, 2, 0.5): n from the gradient, h, l from psi
-// about n, built with Eigen (independent of the package's tangent frame).
 ContactGeometry geometryOn(const Eigen::Vector2d& gradient, double psi) {
-  const Eigen::Vector3d n = Eigen::Vector3d(-gradient.x(), -gradient.y(), 1.0).normalized();
-  const Eigen::Vector3d axis = Eigen::Vector3d::UnitZ().cross(n);
-  Eigen::Matrix3d tangent = Eigen::Matrix3d::Identity();
-  if (axis.norm() > 0) {
-    tangent = Eigen::AngleAxisd(std::atan2(axis.norm(), n.z()), axis.normalized()).toRotationMatrix();
-  }
-  ContactGeometry geo;
-  geo.contact_point = Eigen::Vector3d(1.0, 2.0, 0.5);
-  geo.heading_frame = tangent * Eigen::AngleAxisd(psi, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  geo.centre = geo.contact_point + kR * geo.heading_frame.col(2);
-  geo.gradient = gradient;
-  return geo;
+  return spherical_robots::test_support::geometryOn(gradient, psi, kR);
 }
 
 TrackingError errorTo(const ContactGeometry& geo, const Eigen::Vector3d& offset) {
@@ -241,8 +223,8 @@ TEST_P(SmoothLaw, EachTypeRealisesTheDesiredVelocityAsItsKinematicsAllow) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllTypes, SmoothLaw, ::testing::ValuesIn(kAllTypes),
-                         [](const auto& info) { return typeName(info.param); });
+INSTANTIATE_TEST_SUITE_P(AllTypes, SmoothLaw, ::testing::ValuesIn(kAllRobotTypes),
+                         [](const auto& info) { return testName(info.param); });
 
 // ------------------------------------------------------------------------------------------
 // RS specifics: the tilt set-point stays inside max_tilt, and a robot with u abeam keeps rolling.

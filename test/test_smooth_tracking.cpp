@@ -28,6 +28,7 @@
 #include "spherical_robots/terrain/pursuit_law.hpp"
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
 #include "spherical_robots/terrain/terrain_simulation.hpp"
+#include "terrain_test_support.hpp"
 
 #ifndef SPHERICAL_ROBOTS_SOURCE_DIR
 #error "SPHERICAL_ROBOTS_SOURCE_DIR must be defined (CMakeLists.txt)"
@@ -56,15 +57,7 @@ config::TerrainConfig shippedConfig() {
       config::YamlParameterSource(SPHERICAL_ROBOTS_SOURCE_DIR "/config/terrain.yaml"));
 }
 
-struct Case {
-  RobotType type;
-  const char* path;
-  ContactModel model;
-};
-
-void PrintTo(const Case& c, std::ostream* os) {
-  *os << toString(c.type) << " " << c.path << " " << toString(c.model);
-}
+using Case = spherical_robots::test_support::BatchCase;
 
 bool isDiamond(const Case& c) { return std::string(c.path) == "diamond"; }
 
@@ -181,27 +174,9 @@ TEST_P(SmoothLawCriteria, MeetsIssue13sCriteria) {
   }
 }
 
-std::vector<Case> allCases() {
-  std::vector<Case> cases;
-  for (ContactModel model : {ContactModel::Paper, ContactModel::Rolling}) {
-    for (const char* path : {"circle", "diamond"}) {
-      for (RobotType type : {RobotType::ThreeAxisRolling, RobotType::TwoAxisRolling,
-                             RobotType::RollingAndTurning, RobotType::RollingAndSteering}) {
-        cases.push_back({type, path, model});
-      }
-    }
-  }
-  return cases;
-}
-
-std::string caseName(const ::testing::TestParamInfo<Case>& info) {
-  const std::string t = toString(info.param.type);
-  return (t == "3R" ? std::string("ThreeR") : t == "2R" ? "TwoR" : t) + "_" + info.param.path +
-         "_" + toString(info.param.model);
-}
-
-INSTANTIATE_TEST_SUITE_P(RobotsPathsModels, SmoothLawCriteria, ::testing::ValuesIn(allCases()),
-                         caseName);
+INSTANTIATE_TEST_SUITE_P(RobotsPathsModels, SmoothLawCriteria,
+                         ::testing::ValuesIn(spherical_robots::test_support::allBatchCases()),
+                         spherical_robots::test_support::batchCaseName);
 
 // Insensitive to rounding: moving the start by 1e-12 m (thousands of ulps of the state, far more
 // than a compiler's reordering of one operation) moves the smooth law's tracking figures by less
@@ -227,8 +202,9 @@ TEST_P(SmoothLawRounding, APerturbedStartGivesTheSameTrackingFigures) {
   EXPECT_EQ(smooth.first_converged, smooth_nudged.first_converged);
 }
 
-INSTANTIATE_TEST_SUITE_P(RobotsPathsModels, SmoothLawRounding, ::testing::ValuesIn(allCases()),
-                         caseName);
+INSTANTIATE_TEST_SUITE_P(RobotsPathsModels, SmoothLawRounding,
+                         ::testing::ValuesIn(spherical_robots::test_support::allBatchCases()),
+                         spherical_robots::test_support::batchCaseName);
 
 }  // namespace
 

@@ -22,6 +22,7 @@
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
 #include "spherical_robots/terrain/terrain_simulation.hpp"
+#include "terrain_test_support.hpp"
 
 #ifndef SPHERICAL_ROBOTS_SOURCE_DIR
 #error "SPHERICAL_ROBOTS_SOURCE_DIR must be defined (CMakeLists.txt)"
@@ -126,15 +127,7 @@ TEST(TrackingSummary, IsNaNWhenNeverConvergedOrNeverSettled) {
 // ------------------------------------------------------------------------------------------
 // The closed-loop runs: 4 robots x 2 paths x 2 contact models.
 
-struct TrackingCase {
-  RobotType type;
-  const char* path;
-  ContactModel model;
-};
-
-void PrintTo(const TrackingCase& c, std::ostream* os) {
-  *os << toString(c.type) << " on the " << c.path << ", " << toString(c.model) << " contact model";
-}
+using TrackingCase = spherical_robots::test_support::BatchCase;
 
 // Bounds on |e_t| after 40 s (the mean must be below the 0.1 m threshold, paper model).
 //  * Circle (smooth, constant speed 0.1 m/s): tracking is a steady state; the max may be no more
@@ -211,25 +204,9 @@ TEST_P(PaperTrackingClaim, ConvergesWithin30sAndStaysOnThePathAfter40s) {
   EXPECT_LT(r.max_surface_gap, 1e-12);
 }
 
-std::vector<TrackingCase> allCases() {
-  std::vector<TrackingCase> v;
-  for (auto model : {ContactModel::Paper, ContactModel::Rolling}) {
-    for (const char* path : {"circle", "diamond"}) {
-      for (auto type : {RobotType::ThreeAxisRolling, RobotType::TwoAxisRolling,
-                        RobotType::RollingAndTurning, RobotType::RollingAndSteering}) {
-        v.push_back({type, path, model});
-      }
-    }
-  }
-  return v;
-}
-
-INSTANTIATE_TEST_SUITE_P(RobotsPathsModels, PaperTrackingClaim, ::testing::ValuesIn(allCases()),
-                         [](const auto& info) {
-                           const std::string t = toString(info.param.type);
-                           return (t == "3R" ? std::string("ThreeR") : t == "2R" ? "TwoR" : t) +
-                                  "_" + info.param.path + "_" + toString(info.param.model);
-                         });
+INSTANTIATE_TEST_SUITE_P(RobotsPathsModels, PaperTrackingClaim,
+                         ::testing::ValuesIn(spherical_robots::test_support::allBatchCases()),
+                         spherical_robots::test_support::batchCaseName);
 
 }  // namespace
 

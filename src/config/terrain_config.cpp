@@ -1,7 +1,9 @@
 #include "spherical_robots/config/terrain_config.hpp"
 
+#include <initializer_list>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace spherical_robots::config {
 namespace {
@@ -18,42 +20,41 @@ double nonNegative(const ParameterSource& source, const std::string& key, double
   return value;
 }
 
+/// Each named gain read from prefix + name with read(source, key, fallback); absent keys keep
+/// the value gains already holds.
+template <typename Gains, typename Read>
+void readGains(const ParameterSource& source, const std::string& prefix, Gains& gains,
+               std::initializer_list<std::pair<const char*, double Gains::*>> fields, Read read) {
+  for (const auto& [name, member] : fields) {
+    gains.*member = read(source, prefix + name, gains.*member);
+  }
+}
+
 terrain::PursuitGains loadGains(const ParameterSource& source, terrain::RobotType type,
                                 double k_e) {
-  const std::string prefix = kRoot + "gains/" + terrain::toString(type) + "/";
+  using G = terrain::PursuitGains;
   terrain::PursuitGains gains = terrain::defaultGains(type);
   gains.k_e = k_e;
-  const auto gain = [&](const char* name, double& value) {
-    value = nonNegative(source, prefix + name, value);
-  };
-  gain("k_theta", gains.k_theta);
-  gain("k_phi1", gains.k_phi1);
-  gain("k_phi2", gains.k_phi2);
-  gain("k_psi", gains.k_psi);
-  gain("k_theta1", gains.k_theta1);
-  gain("k_theta2", gains.k_theta2);
-  gain("k_alpha", gains.k_alpha);
-  gain("k_phi", gains.k_phi);
+  readGains(source, kRoot + "gains/" + terrain::toString(type) + "/", gains,
+            {{"k_theta", &G::k_theta}, {"k_phi1", &G::k_phi1}, {"k_phi2", &G::k_phi2},
+             {"k_psi", &G::k_psi}, {"k_theta1", &G::k_theta1}, {"k_theta2", &G::k_theta2},
+             {"k_alpha", &G::k_alpha}, {"k_phi", &G::k_phi}},
+            nonNegative);
   return gains;
 }
 
 // The smooth law's gains, checked with the key in the message; the ranges are the core's.
 terrain::SmoothPursuitGains loadSmoothGains(const ParameterSource& source, terrain::RobotType type) {
+  using G = terrain::SmoothPursuitGains;
   const std::string prefix = kRoot + "smooth_gains/" + terrain::toString(type) + "/";
   terrain::SmoothPursuitGains gains = terrain::defaultSmoothGains(type);
-  const auto gain = [&](const char* name, double& value) {
-    value = finiteNumber(source, prefix + name, value);
-  };
-  gain("window", gains.window);
-  gain("lead", gains.lead);
-  gain("approach_speed", gains.approach_speed);
-  gain("along_gain", gains.along_gain);
-  gain("cross_gain", gains.cross_gain);
-  gain("heading_gain", gains.heading_gain);
-  gain("tilt_gain", gains.tilt_gain);
-  gain("max_tilt_rate", gains.max_tilt_rate);
-  gain("max_tilt", gains.max_tilt);
-  gain("min_speed", gains.min_speed);
+  readGains(source, prefix, gains,
+            {{"window", &G::window}, {"lead", &G::lead}, {"approach_speed", &G::approach_speed},
+             {"along_gain", &G::along_gain}, {"cross_gain", &G::cross_gain},
+             {"heading_gain", &G::heading_gain}, {"tilt_gain", &G::tilt_gain},
+             {"max_tilt_rate", &G::max_tilt_rate}, {"max_tilt", &G::max_tilt},
+             {"min_speed", &G::min_speed}},
+            finiteNumber);
   try {
     terrain::validate(gains);
   } catch (const std::invalid_argument& error) {

@@ -121,7 +121,9 @@ DriveRates SmoothPursuitController::command(const ContactGeometry& geometry, dou
       // behind; at R alpha' cos(phi) (eq 48). The turn comes from the tilt: eq 44 inverted,
       // sin(phi*) = -turn / alpha', regularised where alpha' -> 0 and bounded smoothly by
       // max_tilt; the tilt rate servos phi towards phi*, smoothly bounded by max_tilt_rate.
-      rates.roll_rate = 0.5 * (std::hypot(forward, leftward) + forward) / (radius_ * std::cos(tilt));
+      // |u| by sqrt, not hypot: speeds of metres per second neither overflow nor underflow.
+      const double planar_speed = std::sqrt(forward * forward + leftward * leftward);
+      rates.roll_rate = 0.5 * (planar_speed + forward) / (radius_ * std::cos(tilt));
       const double roll_floor = gains_.min_speed / radius_;
       const double sine = -turn * rates.roll_rate /
                           (rates.roll_rate * rates.roll_rate + roll_floor * roll_floor);

@@ -34,8 +34,6 @@ TerrainSimulation::TerrainSimulation(const TerrainKinematics& kinematics,
                                      const ReferencePath& path, const TerrainState& initial)
     : kinematics_(kinematics), controller_(controller), path_(path),
       state_(kinematics.constrain(initial)) {
-  const double never = std::numeric_limits<double>::quiet_NaN();  // NaN matches no time
-  desired_cache_.fill({never, DesiredPoint{}});
   if (controller.type() != kinematics.type()) {
     throw std::invalid_argument("controller is for robot type " + toString(controller.type()) +
                                 " but the kinematics are " + toString(kinematics.type()));
@@ -59,9 +57,10 @@ DriveRates TerrainSimulation::realisedCommand(const TerrainState& state,
 }
 
 const DesiredPoint& TerrainSimulation::desiredAt(double t) const {
-  for (const auto& [time, desired] : desired_cache_) {
-    if (time == t) return desired;
+  for (std::size_t i = 0; i < desired_cache_used_; ++i) {
+    if (desired_cache_[i].first == t) return desired_cache_[i].second;
   }
+  desired_cache_used_ = std::min(desired_cache_used_ + 1, desired_cache_.size());
   auto& slot = desired_cache_[desired_cache_next_];
   desired_cache_next_ = (desired_cache_next_ + 1) % desired_cache_.size();
   slot = {t, liftOntoSurface(path_, kinematics_.surface(), t, controller_.velocityWindow())};
@@ -133,7 +132,10 @@ TrackingSummary::TrackingSummary(double threshold, double settle_time)
     : threshold_(threshold), settle_time_(settle_time) {}
 
 void TrackingSummary::add(double t, double error_norm) {
-  if (std::isnan(time_to_converge_) && error_norm < threshold_) time_to_converge_ = t;
+  if (!converged_ && error_norm < threshold_) {
+    converged_ = true;
+    time_to_converge_ = t;
+  }
   if (t >= settle_time_) {
     sum_after_ += error_norm;
     max_after_ = count_after_ == 0 ? error_norm : std::max(max_after_, error_norm);

@@ -1,5 +1,6 @@
 #pragma once
-// The pure-pursuit controller node (terrain paper eqs 53-58) and its teleoperation mode.
+// The terrain controller node (the paper's pursuit laws, eqs 53-58, or the smooth law) and its
+// teleoperation mode.
 
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/Twist.h>

@@ -23,21 +23,22 @@ struct SmoothPursuitGains {
   double approach_speed = 0.5;  ///< v_c [m/s] > 0: the bound of the correction c, far from p_d
   /// K_a [1/s] > 0: the correction's slope at e_t = 0 along the path (the direction of w).
   double along_gain = 4.0;
-  double cross_gain = 3.0;  ///< K_c [1/s] > 0: the same across the path
-  double heading_gain = 2.0;    ///< k_h [1/s] >= 0: turn rate per unit sine of u off h (3R, RT, RS)
-  double tilt_gain = 3.0;       ///< k_t [1/s] > 0: RS tilt servo
+  double cross_gain = 3.0;    ///< K_c [1/s] > 0: the same across the path
+  double heading_gain = 2.0;  ///< k_h [1/s] >= 0: turn rate per unit sine of u off h (3R, RT, RS)
+  double tilt_gain = 3.0;     ///< k_t [1/s] > 0: RS tilt servo
   /// r_t [rad/s] > 0: the RS tilt rate's smooth bound, r_t tanh(k_t (phi* - phi) / r_t), so that
   /// a swing of the tilt stays within what a tilt actuator's acceleration limit can follow.
   double max_tilt_rate = 1.0;
-  double max_tilt = 0.8;        ///< [rad] > 0: bound of the RS tilt set-point, inside the limit
+  double max_tilt = 0.8;  ///< [rad] > 0: bound of the RS tilt set-point, inside the limit
   /// v_e [m/s] > 0: where |u| falls below it, the steering towards u fades out smoothly (u's
   /// direction means nothing at u = 0).
   double min_speed = 0.01;
 };
 
 /// The default gains of a robot type (docs/conventions.md, "The smooth law"; also in
-/// config/terrain.yaml): RT and RS lead their window by 1 / heading_gain and turn harder, RS
-/// approaches slower (its turns are slow) and keeps its steering regularised over more speed.
+/// config/terrain.yaml): RT and RS lead their window by 1 / heading_gain and average over a
+/// longer one, RT turns harder, RS approaches slower (its turns are slow), corrects less across
+/// the path and keeps its steering regularised over more speed.
 SmoothPursuitGains defaultSmoothGains(RobotType type);
 
 /// Throws std::invalid_argument naming the first gain that is non-finite or out of its range,

@@ -55,7 +55,10 @@ class TerrainSimulation {
   TerrainState state_;
   double t_ = 0.0;
   double t_compensation_ = 0.0;  ///< Kahan: 40,000 steps of 5 ms end at exactly 200 s
+  /// The cached points and how many of the slots hold one (no NaN "empty" time: a build with
+  /// -ffast-math may assume NaN away, and the run's figures must not depend on the build).
   mutable std::array<std::pair<double, DesiredPoint>, 2> desired_cache_;
+  mutable std::size_t desired_cache_used_ = 0;
   mutable std::size_t desired_cache_next_ = 0;
 };
 
@@ -101,6 +104,7 @@ class TrackingSummary {
  private:
   double threshold_;
   double settle_time_;
+  bool converged_ = false;  ///< a flag, not isnan(time_to_converge_): see desired_cache_
   double time_to_converge_ = std::numeric_limits<double>::quiet_NaN();
   double sum_after_ = 0.0;
   double max_after_ = 0.0;
