@@ -188,7 +188,7 @@ std::string setpointsOf(const sensor_msgs::JointState& msg,
 HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : actuators_(makeActuators(pnh)),
       command_input_(nh.resolveName("actuators/command"), actuators_.commandTimeout()),
-      clock_(positiveParam(pnh, "max_clock_step", 5.0)),
+      clock_(positiveParam(pnh, "max_clock_step", kDefaultMaxClockStep)),
       updater_(nh, pnh) {
   const double rate = positiveParam(pnh, "rate", 100.0);
   state_msg_.name = actuators_.names();

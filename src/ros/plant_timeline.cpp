@@ -15,7 +15,7 @@ PlantTimeline::PlantTimeline(double duration, double max_clock_step)
     : duration_(duration), clock_(max_clock_step) {}
 
 PlantTimeline::PlantTimeline(const ros::NodeHandle& pnh)
-    : PlantTimeline(numberParam(pnh, "duration", 0.0), positiveParam(pnh, "max_clock_step", 5.0)) {}
+    : PlantTimeline(numberParam(pnh, "duration", 0.0), positiveParam(pnh, "max_clock_step", kDefaultMaxClockStep)) {}
 
 void PlantTimeline::tick(const ros::Time& now, const std::function<void(double elapsed)>& advance) {
   const ClockStep step = clock_.observe(now.toSec());

@@ -37,7 +37,7 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       max_position_(positiveParam(pnh, "max_position", 1e3)),
       max_cmd_vel_(positiveParam(pnh, "max_cmd_vel", 10.0)),
       max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
-      clock_(positiveParam(pnh, "max_clock_step", 5.0)),
+      clock_(positiveParam(pnh, "max_clock_step", kDefaultMaxClockStep)),
       input_(nh.resolveName(mode_ == Mode::Tracking ? "terrain_state" : "cmd_vel"),
              positiveParam(pnh, "input_timeout", 0.5)),
       updater_(nh, pnh) {

@@ -40,7 +40,7 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       max_radius_(positiveParam(pnh, "max_radius", kDefaultMaxRadius * radius_)),
       max_position_(positiveParam(pnh, "max_position", 1e3)),
       max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
-      clock_(positiveParam(pnh, "max_clock_step", 5.0)),
+      clock_(positiveParam(pnh, "max_clock_step", kDefaultMaxClockStep)),
       frame_id_(stringParam(pnh, "frame_id", "odom")),
       sphere_frame_(stringParam(pnh, "sphere_frame", "base_link")),
       samples_per_step_(static_cast<int>(positiveParam(pnh, "samples_per_step", 200))),

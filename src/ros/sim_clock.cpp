@@ -1,5 +1,6 @@
 #include "spherical_robots/ros/sim_clock.hpp"
 
+#include "spherical_robots/core/clock_jump.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 #include "spherical_robots/ros/timer_jump_guard.hpp"
 
@@ -12,13 +13,6 @@
 #include <utility>
 
 namespace spherical_robots {
-namespace {
-
-// [s] a longer forward step of the followed clock is a jump (every node's ~max_clock_step default).
-constexpr double kMaxClockStep = 5.0;
-
-}  // namespace
-
 bool periodDue(const ros::Time& last, const ros::Time& now, double period) {
   return last.isZero() || now < last || (now - last).toSec() >= period - 1e-9;
 }
@@ -40,7 +34,7 @@ SimClock::SimClock(ros::NodeHandle nh, double step, double speedup, Tick tick, R
                               onTick(event.current_real);
                             });
     timer_guard_ = std::make_unique<TimerJumpGuard>(
-        nh, std::vector<std::pair<ros::Timer*, double>>{{&timer_, step_}}, kMaxClockStep);
+        nh, std::vector<std::pair<ros::Timer*, double>>{{&timer_, step_}}, kDefaultMaxClockStep);
     ROS_INFO_STREAM("Stepping every " << step_ << " s of ROS time ("
                                       << (ros::Time::isSimTime() ? "simulated" : "wall") << " clock)");
     return;

@@ -16,6 +16,9 @@ enum class ClockStep {
 
 const char* toString(ClockStep step);
 
+/// [s] the default largest forward step taken as elapsed time: every node's ~max_clock_step.
+constexpr double kDefaultMaxClockStep = 5.0;
+
 class ClockJumpDetector {
  public:
   /// @param max_step [s], finite and > 0: the largest forward step taken as elapsed time.
