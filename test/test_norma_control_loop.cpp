@@ -128,7 +128,9 @@ TEST(NormaControlLoop, ASaturatedEffortHoldsTheIntegralsThatPushItFurther) {
   loop.step(kStep, state);
   for (int i = 0; i < 3; ++i) {
     const double effort = i < 2 ? first.torque : first.force;
-    if (effort * first.integrand(i) > 0.0) EXPECT_EQ(loop.integrals()(i), 0.0) << i;
+    if (effort * first.integrand(i) > 0.0) {
+      EXPECT_EQ(loop.integrals()(i), 0.0) << "integral " << i;
+    }
   }
   EXPECT_INVALID_ARGUMENT(makeLoop(norma::ControllerKind::kPaper, {0.0, 1.0}), "max_torque");
 }
