@@ -11,7 +11,7 @@ packages=(
   # ROS libraries and messages
   ros-base-dev libtf2-ros-dev libtf2-msgs-dev
   libnav-msgs-dev libvisualization-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev
-  libdiagnostic-msgs-dev libstd-msgs-dev libdiagnostic-updater-dev
+  libdiagnostic-msgs-dev libstd-msgs-dev libstd-srvs-dev libdiagnostic-updater-dev
   # core libraries (liburdfdom-dev: urdf_parser/urdf_parser.h, linked directly; no ROS urdf)
   libeigen3-dev liburdfdom-dev libboost-dev libyaml-cpp-dev
   # tests and benchmarks
@@ -19,7 +19,7 @@ packages=(
   # running stacks, bags, plots, rviz
   python3-rospy python3-roslaunch python3-rosbag python3-rosnode python3-rostopic rosbash
   python3-nav-msgs python3-geometry-msgs python3-sensor-msgs python3-diagnostic-msgs
-  python3-std-msgs python3-tf2-ros python3-tf2-msgs python3-visualization-msgs
+  python3-std-msgs python3-std-srvs python3-tf2-ros python3-tf2-msgs python3-visualization-msgs
   python3-diagnostic-updater python3-interactive-markers
   ros-robot-state-publisher rviz xvfb xauth x11-utils imagemagick
   python3-numpy python3-matplotlib

@@ -1,6 +1,7 @@
 #include "spherical_robots/ros/freebot_plant_ros.hpp"
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 
 #include <visualization_msgs/MarkerArray.h>
 
@@ -70,8 +71,8 @@ FreebotPlantRos::FreebotPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.1)),
       updater_(nh, pnh) {
   actuator_sub_ = nh.subscribe("actuators/state", 10, &FreebotPlantRos::onActuatorState, this);
-  state_pub_ = nh.advertise<spherical_robots::FreebotState>("freebot_state", 10);
-  marker_pub_ = nh.advertise<visualization_msgs::MarkerArray>("freebot_markers", 10);
+  state_pub_ = nh.advertise<spherical_robots::FreebotState>("freebot_state", kLoopQueueSize);
+  marker_pub_ = nh.advertise<visualization_msgs::MarkerArray>("freebot_markers", kLoopQueueSize);
   updater_.setHardwareID("FreeBOT");
   updater_.add("freebot plant", this, &FreebotPlantRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
@@ -81,7 +82,7 @@ FreebotPlantRos::FreebotPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   ROS_INFO_STREAM("FreeBOT chain: " << chain_.moduleCount() << " modules, radii [" << radii.str()
                                     << "] m, reach " << chain_.manipulator().reach()
                                     << " m; step " << step_ << " s");
-  clock_ = makePlantClock(nh, pnh, step_, 1.0, [this](const ros::Time& now) { tick(now); },
+  clock_ = makePlantClock(nh, pnh, step_, 1.0, [this](const ros::Time& now) { return tick(now); },
                           state_pub_, actuator_sub_);
 }
 
@@ -92,10 +93,11 @@ void FreebotPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
   } catch (const std::invalid_argument& e) {
     actuator_input_.reject(e.what());
   }
+  if (clock_) clock_->received(actuator_sub_.getTopic(), msg.header.stamp);
 }
 
-void FreebotPlantRos::tick(const ros::Time& now) {
-  if (timeline_.finished()) return;
+std::vector<std::string> FreebotPlantRos::tick(const ros::Time& now) {
+  if (timeline_.finished()) return {};
   const std::vector<freebot::WheelSpeeds> wheels =
       actuator_input_.fresh(now) ? wheels_
                                  : std::vector<freebot::WheelSpeeds>(chain_.moduleCount());
@@ -113,12 +115,17 @@ void FreebotPlantRos::tick(const ros::Time& now) {
   const freebot::LinkPose end = chain_.manipulator().endEffector(state_.joints);
   state_pub_.publish(conversions::toFreebotStateMsg(state_, end, kWorldFrame, now));
   if (trail_.due(now)) trail_.add(now, end.position, end.orientation);
-  if (periodDue(last_publish_, now, publish_period_)) publishFrames(now);
+  std::vector<std::string> published = {state_pub_.getTopic()};
+  if (periodDue(last_publish_, now, publish_period_)) {
+    publishFrames(now);
+    published.insert(published.end(), {marker_pub_.getTopic(), "/tf"});
+  }
 
   if (timeline_.complete(now)) {
     ROS_INFO_STREAM("scenario complete after " << timeline_.duration() << " s");
-    ros::shutdown();
+    clock_->finish();
   }
+  return published;
 }
 
 void FreebotPlantRos::publishFrames(const ros::Time& now) {

@@ -13,7 +13,7 @@
 #include "spherical_robots/config/roller_config.hpp"
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
-#include "spherical_robots/ros/sim_clock.hpp"
+#include "spherical_robots/ros/plant_clock.hpp"
 
 namespace spherical_robots {
 namespace {

@@ -1,6 +1,7 @@
 #include "spherical_robots/ros/hardware_interface_sim_ros.hpp"
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 #include "spherical_robots/ros/timer_jump_guard.hpp"
 
 #include <algorithm>
@@ -18,7 +19,7 @@ namespace {
 
 std::string describe(const XmlRpc::XmlRpcValue& value) {
   std::ostringstream out;
-  out << value;
+  value.write(out);
   return out.str();
 }
 
@@ -189,6 +190,7 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
     : actuators_(makeActuators(pnh)),
       command_input_(nh.resolveName("actuators/command"), actuators_.commandTimeout()),
       clock_(positiveParam(pnh, "max_clock_step", kDefaultMaxClockStep)),
+      max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
       updater_(nh, pnh) {
   const double rate = positiveParam(pnh, "rate", 100.0);
   state_msg_.name = actuators_.names();
@@ -197,15 +199,23 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
   updater_.add("actuators", this, &HardwareInterfaceSimRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
 
-  state_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/state", 10);
+  state_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/state", kLoopQueueSize);
   command_sub_ =
       nh.subscribe("actuators/command", 10, &HardwareInterfaceSimRos::commandCallback, this);
   e_stop_sub_ = nh.subscribe("estop", 10, &HardwareInterfaceSimRos::eStopCallback, this);
-  // A ros::Timer (not a WallTimer) so the actuators follow simulated time under /use_sim_time.
-  timer_ =
-      nh.createTimer(ros::Duration(1.0 / rate), &HardwareInterfaceSimRos::timerCallback, this);
-  timer_guard_ = std::make_unique<TimerJumpGuard>(
-      nh, std::vector<std::pair<ros::Timer*, double>>{{&timer_, 1.0 / rate}}, clock_.maxStep());
+  if (isLockstepParticipant(nh)) {
+    lockstep_ = std::make_unique<LockstepParticipant>(
+        nh, std::vector<ros::Subscriber>{command_sub_}, [this, rate](const ros::Time& now) {
+          update(now);
+          return LockstepParticipant::Done{{state_pub_.getTopic()}, now + ros::Duration(1.0 / rate)};
+        });
+  } else {
+    // A ros::Timer (not a WallTimer) so the actuators follow simulated time under /use_sim_time.
+    timer_ =
+        nh.createTimer(ros::Duration(1.0 / rate), &HardwareInterfaceSimRos::timerCallback, this);
+    timer_guard_ = std::make_unique<TimerJumpGuard>(
+        nh, std::vector<std::pair<ros::Timer*, double>>{{&timer_, 1.0 / rate}}, clock_.maxStep());
+  }
 
   const auto& limits = actuators_.limits().front();
   ROS_INFO("hardware_interface_sim: %zu actuators, |velocity| <= %g rad/s, |accel| <= %g rad/s^2, "
@@ -227,8 +237,14 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
 }
 
 void HardwareInterfaceSimRos::commandCallback(const sensor_msgs::JointState::ConstPtr& msg) {
-  // The watchdog counts from arrival, not from header.stamp: many publishers leave it zero.
-  const ros::Time now = ros::Time::now();
+  // The watchdog counts from arrival, not from header.stamp: many publishers leave it zero. In
+  // lock-step a command stamped within the step it arrives in counts from its stamp, whatever
+  // the order the transport delivered it in (the controller's are stamped with their step).
+  const ros::Time stamp = msg->header.stamp;
+  const ros::Time now = lockstep_ && stamp > lockstep_->now() &&
+                                (stamp - lockstep_->now()).toSec() <= max_stamp_skew_
+                            ? stamp
+                            : this->now();
   followClock(now);
   std::vector<double> setpoints;
   std::string reason = setpointsOf(*msg, actuators_, setpoints);
@@ -238,12 +254,12 @@ void HardwareInterfaceSimRos::commandCallback(const sensor_msgs::JointState::Con
     reported_timeout_ = false;
   } else {
     command_input_.reject(reason);  // the actuators keep the last good set-points
-  }
+  }  if (lockstep_) lockstep_->received(command_sub_.getTopic(), stamp);
 }
 
 void HardwareInterfaceSimRos::eStopCallback(const std_msgs::Bool::ConstPtr& msg) {
   if (msg->data == actuators_.eStopped()) return;
-  const ros::Time now = ros::Time::now();
+  const ros::Time now = this->now();
   followClock(now);
   actuators_.setEStop(msg->data, now.toSec());
   if (msg->data)
@@ -257,7 +273,14 @@ void HardwareInterfaceSimRos::eStopCallback(const std_msgs::Bool::ConstPtr& msg)
 
 void HardwareInterfaceSimRos::timerCallback(const ros::TimerEvent& event) {
   timer_guard_->observe(event);
-  const ros::Time now = ros::Time::now();
+  update(ros::Time::now());
+}
+
+ros::Time HardwareInterfaceSimRos::now() const {
+  return lockstep_ ? lockstep_->now() : ros::Time::now();
+}
+
+void HardwareInterfaceSimRos::update(const ros::Time& now) {
   followClock(now);
   actuators_.update(now.toSec());
   if (actuators_.timedOut() && !reported_timeout_) {

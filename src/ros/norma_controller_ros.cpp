@@ -1,6 +1,7 @@
 #include "spherical_robots/ros/norma_controller_ros.hpp"
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 
 #include <geometry_msgs/PointStamped.h>
 #include <nav_msgs/Path.h>
@@ -16,7 +17,7 @@
 #include "spherical_robots/norma/norma_simulation.hpp"
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
-#include "spherical_robots/ros/sim_clock.hpp"
+#include "spherical_robots/ros/plant_clock.hpp"
 
 namespace spherical_robots {
 namespace {
@@ -69,9 +70,9 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       input_(nh.resolveName("norma_state"), positiveParam(pnh, "input_timeout", 0.05)),
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "input_timeout", 0.05)),
       updater_(nh, pnh) {
-  command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", 10);
-  error_pub_ = nh.advertise<spherical_robots::TrackingError>("tracking_error", 10);
-  target_pub_ = nh.advertise<geometry_msgs::PointStamped>("target", 10);
+  command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", kLoopQueueSize);
+  error_pub_ = nh.advertise<spherical_robots::TrackingError>("tracking_error", kLoopQueueSize);
+  target_pub_ = nh.advertise<geometry_msgs::PointStamped>("target", kLoopQueueSize);
   desired_path_pub_ = nh.advertise<nav_msgs::Path>("desired_path", 1, true);
   desired_path_pub_.publish(desiredPath(ros::Time::now()));
   state_sub_ = nh.subscribe("norma_state", 10, &NormaControllerRos::onState, this);
@@ -79,6 +80,14 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.setHardwareID("Norma");
   updater_.add("norma controller", this, &NormaControllerRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
+  if (isLockstepParticipant(nh)) {
+    lockstep_ = std::make_unique<LockstepParticipant>(
+        nh, std::vector<ros::Subscriber>{state_sub_, actuator_sub_}, [this](const ros::Time& now) {
+          LockstepParticipant::Done done;
+          if (latest_state_ && latest_state_->header.stamp == now) done.published = control(*latest_state_);
+          return done;
+        });
+  }
   ROS_INFO_STREAM("Norma controller: "
                   << (controller().kind() == norma::ControllerKind::kPaper
                           ? "paper (eqs 48-51, Table 1)"
@@ -92,19 +101,31 @@ void NormaControllerRos::onActuatorState(const sensor_msgs::JointState& msg) {
     const std::vector<double> efforts = conversions::effortsByName(
         msg, kActuators, hardware::kImplausibleFactor * std::max(limits.max_torque, limits.max_force));
     loop_.actuatorsApplied(efforts[0], efforts[1]);
-    actuator_input_.accept(ros::Time::now());
+    actuator_input_.accept(now());
   } catch (const std::invalid_argument& e) {
     actuator_input_.reject(e.what());
   }
+  if (lockstep_) lockstep_->received(actuator_sub_.getTopic(), msg.header.stamp);
 }
 
+ros::Time NormaControllerRos::now() const { return lockstep_ ? lockstep_->now() : ros::Time::now(); }
+
 void NormaControllerRos::onState(const spherical_robots::NormaState& msg) {
+  if (!lockstep_) {
+    control(msg);
+    return;
+  }
+  latest_state_ = msg;
+  lockstep_->received(state_sub_.getTopic(), msg.header.stamp);
+}
+
+std::vector<std::string> NormaControllerRos::control(const spherical_robots::NormaState& msg) {
   const ros::Time now = msg.header.stamp;
   norma::ControlOutput output;
   try {
     // The loop validates the state before it changes anything; the stamp is checked against
     // the clock first, so a state stamped in the future cannot move the path clock.
-    const std::string stamp_problem = stampProblem(now, ros::Time::now(), max_stamp_skew_);
+    const std::string stamp_problem = stampProblem(now, this->now(), max_stamp_skew_);
     if (!stamp_problem.empty()) throw std::invalid_argument("norma_state " + stamp_problem);
     norma::NormaMeasurement state;
     state.q = norma::Vector4(msg.q[0], msg.q[1], msg.q[2], msg.q[3]);
@@ -115,15 +136,16 @@ void NormaControllerRos::onState(const spherical_robots::NormaState& msg) {
     output = loop_.step(now.toSec(), state);
   } catch (const std::invalid_argument& e) {
     input_.reject(e.what());  // nothing commanded: the hardware keeps the last good efforts
-    return;
+    return {};
   }
-  input_.accept(ros::Time::now());
+  input_.accept(this->now());
   sensor_msgs::JointState command;
   command.header.stamp = now;
   command.name = kActuators;
   command.effort = {output.torque, output.force};
   command_pub_.publish(command);
-  const double age = (ros::Time::now() - now).toSec();
+  std::vector<std::string> published = {command_pub_.getTopic()};
+  const double age = (this->now() - now).toSec();
   max_state_age_ = std::max(max_state_age_, age);
   if (age > kLateAge) {
     ++late_commands_;
@@ -150,7 +172,9 @@ void NormaControllerRos::onState(const spherical_robots::NormaState& msg) {
     target.header = error.header;
     target.point = error.desired;
     target_pub_.publish(target);
+    published.insert(published.end(), {error_pub_.getTopic(), target_pub_.getTopic()});
   }
+  return published;
 }
 
 void NormaControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
@@ -168,7 +192,7 @@ void NormaControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& s
   if (max_state_age_ > kLateAge)
     status.mergeSummary(diagnostic_msgs::DiagnosticStatus::WARN, "commands late: lower the speed-up");
   max_state_age_ = 0.0;
-  input_.report(status, ros::Time::now());
+  input_.report(status, now());
   actuator_input_.reportRejections(status);
 }
 

@@ -1,6 +1,7 @@
 #include "spherical_robots/ros/norma_plant_ros.hpp"
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 
 #include <nav_msgs/Odometry.h>
 
@@ -51,9 +52,9 @@ NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       updater_(nh, pnh) {
   state_.psi = numberParam(pnh, "initial_psi", 0.0);
   actuator_sub_ = nh.subscribe("actuators/state", 10, &NormaPlantRos::onActuatorState, this);
-  state_pub_ = nh.advertise<spherical_robots::NormaState>("norma_state", 10);
-  odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
-  joint_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
+  state_pub_ = nh.advertise<spherical_robots::NormaState>("norma_state", kLoopQueueSize);
+  odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", kLoopQueueSize);
+  joint_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", kLoopQueueSize);
 
   updater_.setHardwareID("Norma");
   updater_.add("norma plant", this, &NormaPlantRos::diagnose);
@@ -65,7 +66,7 @@ NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
                                 << p.m_shell << ", shaft " << p.m_shaft << ", pendulum "
                                 << p.m_pendulum << ", slider " << p.m_slider << " kg; step "
                                 << step_ << " s");
-  clock_ = makePlantClock(nh, pnh, step_, 1.0, [this](const ros::Time& now) { tick(now); },
+  clock_ = makePlantClock(nh, pnh, step_, 1.0, [this](const ros::Time& now) { return tick(now); },
                           state_pub_, actuator_sub_);
 }
 
@@ -78,23 +79,29 @@ void NormaPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
   } catch (const std::invalid_argument& e) {
     actuator_input_.reject(e.what());
   }
+  if (clock_) clock_->received(actuator_sub_.getTopic(), msg.header.stamp);
 }
 
-void NormaPlantRos::tick(const ros::Time& now) {
-  if (timeline_.finished()) return;
+std::vector<std::string> NormaPlantRos::tick(const ros::Time& now) {
+  if (timeline_.finished()) return {};
   const bool fresh = actuator_input_.fresh(now);
   timeline_.tick(now, [&](double elapsed) {
     state_ = norma::advanceWithHeldInputs(dynamics_, state_, fresh ? torque_ : 0.0,
                                           fresh ? force_ : 0.0, elapsed, step_);
   });
   publishState(now);
-  if (periodDue(last_publish_, now, publish_period_)) publishPose(now);
+  std::vector<std::string> published = {state_pub_.getTopic()};
+  if (periodDue(last_publish_, now, publish_period_)) {
+    publishPose(now);
+    published.insert(published.end(), {odom_pub_.getTopic(), joint_pub_.getTopic(), "/tf"});
+  }
 
   if (timeline_.complete(now)) {
     ROS_INFO_STREAM("scenario complete after " << timeline_.duration() << " s, centre at ("
                                                << state_.x << ", " << state_.y << ") m");
-    ros::shutdown();
+    clock_->finish();
   }
+  return published;
 }
 
 void NormaPlantRos::publishState(const ros::Time& now) {

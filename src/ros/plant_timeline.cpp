@@ -7,7 +7,7 @@
 
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
-#include "spherical_robots/ros/sim_clock.hpp"
+#include "spherical_robots/ros/plant_clock.hpp"
 
 namespace spherical_robots {
 
@@ -56,8 +56,8 @@ void PlantTimeline::report(diagnostic_updater::DiagnosticStatusWrapper& status,
 }
 
 void reportPlantHealth(diagnostic_updater::DiagnosticStatusWrapper& status, const ros::Time& now,
-                       const SimClock& clock, PlantTimeline& timeline, InputMonitor& actuators) {
-  status.add("real-time factor", clock.realTimeFactor());
+                       PlantClock& clock, PlantTimeline& timeline, InputMonitor& actuators) {
+  clock.report(status);
   timeline.report(status, now);
   actuators.report(status, now);
 }

@@ -1,6 +1,7 @@
 #include "spherical_robots/ros/pure_pursuit_ros.hpp"
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 #include "spherical_robots/ros/timer_jump_guard.hpp"
 
 #include <geometry_msgs/PointStamped.h>
@@ -46,15 +47,15 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       parsedParam(pnh, "law", "smooth", terrain::pursuitLawFromString), type_, terrain_config,
       radius_);
 
-  command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", 10);
+  command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", kLoopQueueSize);
   state_sub_ = nh.subscribe("terrain_state", 10, &PurePursuitRos::onTerrainState, this);
   if (mode_ == Mode::Tracking) {
     surface_ = config::makeSurface(terrain_config.surface);
     path_ = parsedParam(pnh, "path", "circle", [&terrain_config](const std::string& name) {
       return config::makePath(name, terrain_config);
     });
-    error_pub_ = nh.advertise<spherical_robots::TrackingError>("tracking_error", 10);
-    target_pub_ = nh.advertise<geometry_msgs::PointStamped>("target", 10);
+    error_pub_ = nh.advertise<spherical_robots::TrackingError>("tracking_error", kLoopQueueSize);
+    target_pub_ = nh.advertise<geometry_msgs::PointStamped>("target", kLoopQueueSize);
     desired_path_pub_ = nh.advertise<nav_msgs::Path>("desired_path", 1, true);
     desired_path_pub_.publish(conversions::sampledPath(*path_, *surface_, kDesiredPathSamples,
                                                        kWorldFrame, ros::Time::now()));
@@ -72,10 +73,19 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.add("pure pursuit controller", this, &PurePursuitRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
   const double period = 1.0 / positiveParam(pnh, "rate", 50.0);
+  if (isLockstepParticipant(nh)) {
+    lockstep_ = std::make_unique<LockstepParticipant>(
+        nh, std::vector<ros::Subscriber>{state_sub_}, [this, period](const ros::Time& now) {
+          return LockstepParticipant::Done{control(now), now + ros::Duration(period)};
+        });
+    return;
+  }
   timer_ = nh.createTimer(ros::Duration(period), &PurePursuitRos::onTimer, this);
   timer_guard_ = std::make_unique<TimerJumpGuard>(
       nh, std::vector<std::pair<ros::Timer*, double>>{{&timer_, period}}, clock_.maxStep());
 }
+
+ros::Time PurePursuitRos::now() const { return lockstep_ ? lockstep_->now() : ros::Time::now(); }
 
 void PurePursuitRos::onTerrainState(const spherical_robots::TerrainState& msg) {
   if (msg.robot_type != terrain::toString(type_)) {
@@ -84,10 +94,12 @@ void PurePursuitRos::onTerrainState(const spherical_robots::TerrainState& msg) {
     return;
   }
   const bool primary = mode_ == Mode::Tracking;
-  const ros::Time now = ros::Time::now();
+  // In lock-step the state is taken in at its own stamp, the step it belongs to, whatever the
+  // order the transport delivered it in.
+  const ros::Time now = lockstep_ ? msg.header.stamp : ros::Time::now();
   try {
     // Everything checked before anything changes: a rejected state leaves the last good one.
-    const std::string stamp_problem = stampProblem(msg.header.stamp, now, max_stamp_skew_);
+    const std::string stamp_problem = stampProblem(msg.header.stamp, this->now(), max_stamp_skew_);
     if (!stamp_problem.empty()) throw std::invalid_argument("terrain_state " + stamp_problem);
     const terrain::ContactGeometry geometry =
         conversions::contactGeometryFromMsg(msg, max_position_);
@@ -99,6 +111,7 @@ void PurePursuitRos::onTerrainState(const spherical_robots::TerrainState& msg) {
     if (primary) input_.reject(e.what());
     ROS_WARN_STREAM_THROTTLE(1.0, "Ignoring terrain_state: " << e.what());
   }
+  if (lockstep_) lockstep_->received(state_sub_.getTopic(), msg.header.stamp);
 }
 
 void PurePursuitRos::onCmdVel(const geometry_msgs::Twist& msg) {
@@ -123,9 +136,12 @@ void PurePursuitRos::warnIgnoredOnce(const std::vector<std::string>& fields) {
 
 void PurePursuitRos::onTimer(const ros::TimerEvent& event) {
   timer_guard_->observe(event);
-  const ros::Time now = ros::Time::now();
+  control(ros::Time::now());
+}
+
+std::vector<std::string> PurePursuitRos::control(const ros::Time& now) {
   const double jump = clock_.jumpOver(now.toSec());
-  if (jump != 0.0) timer_guard_->reset();
+  if (jump != 0.0 && timer_guard_) timer_guard_->reset();
   if (jump != 0.0 && !start_.isZero()) {
     // The reference goes on from where it was, not from where the jump would put it.
     start_ = ros::Time(std::max(0.0, start_.toSec() + jump));  // ros::Time cannot go below 0
@@ -142,6 +158,9 @@ void PurePursuitRos::onTimer(const ros::TimerEvent& event) {
                                                                 << e.what());
   }
   command_pub_.publish(conversions::jointStateFromRates(type_, command_, now));
+  std::vector<std::string> published = {command_pub_.getTopic()};
+  if (mode_ == Mode::Tracking) published.insert(published.end(), {error_pub_.getTopic(), target_pub_.getTopic()});
+  return published;
 }
 
 terrain::DriveRates PurePursuitRos::track(const ros::Time& now) {
@@ -192,7 +211,7 @@ void PurePursuitRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& statu
   status.add("lateral rate set-point [rad/s]", command_.lateral_rate);
   status.add("turn rate set-point [rad/s]", command_.turn_rate);
   status.add("command failures", failures_);
-  input_.report(status, ros::Time::now());
+  input_.report(status, now());
 }
 
 }  // namespace spherical_robots

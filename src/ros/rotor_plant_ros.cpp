@@ -1,6 +1,7 @@
 #include "spherical_robots/ros/rotor_plant_ros.hpp"
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 
 #include <nav_msgs/Odometry.h>
 
@@ -33,14 +34,14 @@ RotorPlantRos::RotorPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.5)),
       updater_(nh, pnh) {
   actuator_sub_ = nh.subscribe("actuators/state", 10, &RotorPlantRos::onActuatorState, this);
-  odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
-  joint_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
+  odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", kLoopQueueSize);
+  joint_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", kLoopQueueSize);
   updater_.setHardwareID("rotor sphere");
   updater_.add("rotor sphere plant", this, &RotorPlantRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
   ROS_INFO_STREAM("rotor sphere: R = " << radius_ << " m, k = " << k_ << ", J_zz/J_r = "
                                        << inertia_scale_ << "; step " << step_ << " s");
-  clock_ = makePlantClock(nh, pnh, step_, 1.0, [this](const ros::Time& now) { tick(now); },
+  clock_ = makePlantClock(nh, pnh, step_, 1.0, [this](const ros::Time& now) { return tick(now); },
                           odom_pub_, actuator_sub_);
 }
 
@@ -61,10 +62,11 @@ void RotorPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
   } catch (const std::invalid_argument& e) {
     actuator_input_.reject(e.what());
   }
+  if (clock_) clock_->received(actuator_sub_.getTopic(), msg.header.stamp);
 }
 
-void RotorPlantRos::tick(const ros::Time& now) {
-  if (timeline_.finished()) return;
+std::vector<std::string> RotorPlantRos::tick(const ros::Time& now) {
+  if (timeline_.finished()) return {};
   const bool fresh = actuator_input_.fresh(now);
   timeline_.tick(now, [&](double elapsed) {
     const auto next = rotor::advancePlant(k_, inertia_scale_, state_,
@@ -75,15 +77,20 @@ void RotorPlantRos::tick(const ros::Time& now) {
       throw std::runtime_error("the step produced a non-finite contact state");
     state_ = next;
   });
-  if (periodDue(last_publish_, now, publish_period_)) publishPose(now);
+  std::vector<std::string> published;
+  if (periodDue(last_publish_, now, publish_period_)) {
+    publishPose(now);
+    published = {odom_pub_.getTopic(), joint_pub_.getTopic(), "/tf"};
+  }
 
   if (timeline_.complete(now)) {
     ROS_INFO_STREAM("scenario complete after " << timeline_.duration() << " s, centre at ("
                                                << radius_ * state_.u_a << ", "
                                                << radius_ * state_.v_a << ") m, psi "
                                                << state_.psi << " rad");
-    ros::shutdown();
+    clock_->finish();
   }
+  return published;
 }
 
 void RotorPlantRos::publishPose(const ros::Time& now) {

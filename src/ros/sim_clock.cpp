@@ -1,7 +1,6 @@
 #include "spherical_robots/ros/sim_clock.hpp"
 
 #include "spherical_robots/core/clock_jump.hpp"
-#include "spherical_robots/ros/ros_parameter_source.hpp"
 #include "spherical_robots/ros/timer_jump_guard.hpp"
 
 #include <rosgraph_msgs/Clock.h>
@@ -13,10 +12,6 @@
 #include <utility>
 
 namespace spherical_robots {
-bool periodDue(const ros::Time& last, const ros::Time& now, double period) {
-  return last.isZero() || now < last || (now - last).toSec() >= period - 1e-9;
-}
-
 SimClock::SimClock(ros::NodeHandle nh, double step, double speedup, Tick tick, Ready ready,
                    double ready_timeout)
     : step_(step), speedup_(speedup), tick_(std::move(tick)), ready_(std::move(ready)),
@@ -86,22 +81,6 @@ double SimClock::realTimeFactor() const {
   const double wall = (ros::WallTime::now() - first_tick_wall_).toSec();
   if (first_tick_.isZero() || !(wall > 0.0)) return std::numeric_limits<double>::quiet_NaN();
   return (now_ - first_tick_).toSec() / wall;
-}
-
-std::unique_ptr<SimClock> makePlantClock(ros::NodeHandle nh, const ros::NodeHandle& pnh,
-                                         double step, double default_speedup, SimClock::Tick tick,
-                                         const ros::Publisher& state,
-                                         const ros::Subscriber& actuators) {
-  const bool publish_clock = boolParam(pnh, "publish_clock", false);
-  const double speedup = publish_clock ? numberParam(pnh, "speedup", default_speedup) : 0.0;
-  const int expected_subscribers = static_cast<int>(numberParam(pnh, "wait_for_subscribers", 1.0));
-  return std::make_unique<SimClock>(
-      nh, step, speedup, std::move(tick),
-      [state, actuators, expected_subscribers] {
-        return static_cast<int>(state.getNumSubscribers()) >= expected_subscribers &&
-               actuators.getNumPublishers() > 0;
-      },
-      positiveParam(pnh, "start_timeout", 10.0));
 }
 
 }  // namespace spherical_robots

@@ -1,6 +1,7 @@
 #include "spherical_robots/ros/terrain_plant_ros.hpp"
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 
 #include <nav_msgs/Odometry.h>
 #include <visualization_msgs/Marker.h>
@@ -47,8 +48,8 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   orientation_ = Eigen::Quaterniond(kinematics_->geometry(state_).heading_frame);
 
   actuator_sub_ = nh.subscribe("actuators/state", 10, &TerrainPlantRos::onActuatorState, this);
-  odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
-  state_pub_ = nh.advertise<spherical_robots::TerrainState>("terrain_state", 10);
+  odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", kLoopQueueSize);
+  state_pub_ = nh.advertise<spherical_robots::TerrainState>("terrain_state", kLoopQueueSize);
   marker_pub_ = nh.advertise<visualization_msgs::Marker>("terrain_marker", 1, true);
   marker_pub_.publish(conversions::surfaceMesh(*surface_, positiveParam(pnh, "marker_half_extent", 3.0),
                                                positiveParam(pnh, "marker_resolution", 0.1),
@@ -62,7 +63,7 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
                                            << terrain::toString(model) << " contact model, on "
                                            << surface_->describe() << "; frames " << base_frame_
                                            << ", " << heading_frame_);
-  clock_ = makePlantClock(nh, pnh, step_, 10.0, [this](const ros::Time& now) { tick(now); },
+  clock_ = makePlantClock(nh, pnh, step_, 10.0, [this](const ros::Time& now) { return tick(now); },
                           state_pub_, actuator_sub_);
 }
 
@@ -73,15 +74,20 @@ void TerrainPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
   } catch (const std::invalid_argument& e) {
     actuator_input_.reject(e.what());
   }
+  if (clock_) clock_->received(actuator_sub_.getTopic(), msg.header.stamp);
 }
 
-void TerrainPlantRos::tick(const ros::Time& now) {
-  if (timeline_.finished()) return;
+std::vector<std::string> TerrainPlantRos::tick(const ros::Time& now) {
+  if (timeline_.finished()) return {};
   const terrain::DriveRates rates =
       actuator_input_.fresh(now) ? measured_ : terrain::DriveRates{};
   timeline_.tick(now, [&](double elapsed) { integrate(elapsed, rates); });
 
-  if (periodDue(last_publish_, now, publish_period_)) publishState(now, rates);
+  std::vector<std::string> published;
+  if (periodDue(last_publish_, now, publish_period_)) {
+    publishState(now, rates);
+    published = {odom_pub_.getTopic(), state_pub_.getTopic(), "/tf"};
+  }
   if (trail_.due(now)) {
     const terrain::ContactGeometry geometry = kinematics_->geometry(state_);
     trail_.add(now, geometry.contact_point, Eigen::Quaterniond(geometry.heading_frame));
@@ -91,8 +97,9 @@ void TerrainPlantRos::tick(const ros::Time& now) {
     ROS_INFO_STREAM("scenario complete after " << timeline_.duration()
                                                 << " s, contact point at (" << state_.x << ", "
                                                 << state_.y << ") m");
-    ros::shutdown();
+    clock_->finish();
   }
+  return published;
 }
 
 void TerrainPlantRos::integrate(double elapsed, const terrain::DriveRates& rates) {

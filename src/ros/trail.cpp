@@ -4,7 +4,7 @@
 #include <utility>
 
 #include "spherical_robots/ros/conversions.hpp"
-#include "spherical_robots/ros/sim_clock.hpp"
+#include "spherical_robots/ros/plant_clock.hpp"
 
 namespace spherical_robots {
 

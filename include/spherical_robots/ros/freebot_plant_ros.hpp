@@ -6,7 +6,6 @@
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
-#include <tf2_ros/transform_broadcaster.h>
 
 #include <memory>
 #include <string>
@@ -15,7 +14,8 @@
 #include "spherical_robots/freebot/freebot_chain.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/plant_timeline.hpp"
-#include "spherical_robots/ros/sim_clock.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
+#include "spherical_robots/ros/plant_clock.hpp"
 #include "spherical_robots/ros/trail.hpp"
 
 namespace spherical_robots {
@@ -31,8 +31,8 @@ std::string freebotLinkFrame(const std::string& prefix, std::size_t i);
 
 /// Parameters (private, ~): frame_prefix (""); step [s] (0.01): the tick and the integration
 /// step; publish_rate [Hz] (50): tf and markers; state_timeout [s] (0.1): older measured wheel
-/// speeds count as zero; publish_clock (false), speedup (1), wait_for_subscribers (1),
-/// start_timeout [s] (10): as norma_dynamics; duration [s] (0 = forever); trail_period [s] (0.1):
+/// speeds count as zero; clock ("ros"), speedup (free: 1),
+/// lockstep_timeout, wait_for_subscribers, start_timeout: as terrain_kinematics; duration [s] (0 = forever); trail_period [s] (0.1):
 /// spacing of the end-effector trail's points.
 /// Subscribes actuators/state (velocities of module<i>_wheel_right/left [rad/s]). Publishes
 /// freebot_state (every tick), tf world -> <prefix>link0 (identity) and <prefix>link<i-1> ->
@@ -45,7 +45,8 @@ class FreebotPlantRos {
 
  private:
   void onActuatorState(const sensor_msgs::JointState& msg);
-  void tick(const ros::Time& now);
+  /// One step at now; returns the topics it published.
+  std::vector<std::string> tick(const ros::Time& now);
   void publishFrames(const ros::Time& now);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
@@ -63,10 +64,10 @@ class FreebotPlantRos {
   ros::Subscriber actuator_sub_;
   ros::Publisher state_pub_;
   ros::Publisher marker_pub_;
-  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  TfPublisher tf_broadcaster_;
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
-  std::unique_ptr<SimClock> clock_;  ///< last: it ticks only once everything else exists
+  std::unique_ptr<PlantClock> clock_;  ///< last: it ticks only once everything else exists
 };
 
 }  // namespace spherical_robots

@@ -14,6 +14,7 @@
 #include "spherical_robots/hardware/simulated_actuators.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 
+#include "spherical_robots/ros/lockstep_participant.hpp"
 #include "spherical_robots/ros/timer_jump_guard.hpp"
 
 namespace spherical_robots {
@@ -34,6 +35,10 @@ class HardwareInterfaceSimRos {
   void commandCallback(const sensor_msgs::JointState::ConstPtr& msg);
   void eStopCallback(const std_msgs::Bool::ConstPtr& msg);
   void timerCallback(const ros::TimerEvent& event);
+  /// The actuators' update and their state at `now` (a timer's or a lock-step request's time).
+  void update(const ros::Time& now);
+  /// ROS time, or in lock-step the time of the latest step.
+  ros::Time now() const;
   /// Rebases the actuators when ROS time jumped (a stray /clock, a replay looping back).
   void followClock(const ros::Time& now);
   void publishState(const ros::Time& stamp);
@@ -46,9 +51,11 @@ class HardwareInterfaceSimRos {
   ros::Subscriber e_stop_sub_;
   ros::Timer timer_;
   std::unique_ptr<TimerJumpGuard> timer_guard_;  ///< restarts timer_ after a clock jump
+  std::unique_ptr<LockstepParticipant> lockstep_;  ///< set instead of timer_ in lock-step
   /// Counts accepted and rejected commands and logs rejections; the watchdog is the actuators'.
   InputMonitor command_input_;
   ClockJumpDetector clock_;
+  double max_stamp_skew_;  ///< [s] in lock-step, how far ahead a command's stamp may be
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
   bool reported_timeout_ = false;

@@ -14,6 +14,7 @@
 
 #include "spherical_robots/norma/norma_control_loop.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/lockstep_participant.hpp"
 
 namespace spherical_robots {
 
@@ -40,6 +41,10 @@ class NormaControllerRos {
 
  private:
   void onState(const spherical_robots::NormaState& msg);
+  /// Commands from one state; returns the topics it published (none for a rejected state).
+  std::vector<std::string> control(const spherical_robots::NormaState& msg);
+  /// ROS time, or in lock-step the time of the latest step.
+  ros::Time now() const;
   void onActuatorState(const sensor_msgs::JointState& msg);
   const norma::NormaController& controller() const { return loop_.controller(); }
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
@@ -55,6 +60,9 @@ class NormaControllerRos {
   InputMonitor actuator_input_;
   ros::Subscriber state_sub_;
   ros::Subscriber actuator_sub_;
+  /// In lock-step: the latest state, commanded from when its step's request comes.
+  std::unique_ptr<LockstepParticipant> lockstep_;
+  std::optional<spherical_robots::NormaState> latest_state_;
   ros::Publisher command_pub_;
   ros::Publisher error_pub_;
   ros::Publisher target_pub_;

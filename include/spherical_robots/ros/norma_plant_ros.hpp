@@ -7,23 +7,24 @@
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
-#include <tf2_ros/transform_broadcaster.h>
 
 #include <memory>
+#include <vector>
 #include <string>
 
 #include "spherical_robots/norma/norma_plant.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/trail.hpp"
 #include "spherical_robots/ros/plant_timeline.hpp"
-#include "spherical_robots/ros/sim_clock.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
+#include "spherical_robots/ros/plant_clock.hpp"
 
 namespace spherical_robots {
 
 /// Parameters (private, ~): variant (text | appendix, "text": docs/errata.md); frame_prefix ("");
 /// step [s] (0.001): the tick and the RK4 step; publish_rate [Hz] (50): odom, joint_states, tf;
-/// trail_period [s] (0.5); publish_clock (false), speedup (1), wait_for_subscribers (1),
-/// start_timeout [s] (10): as terrain_kinematics; duration [s] (0 = forever); state_timeout [s]
+/// trail_period [s] (0.5); clock ("ros"), speedup (free: 1),
+/// lockstep_timeout, wait_for_subscribers, start_timeout: as terrain_kinematics; duration [s] (0 = forever); state_timeout [s]
 /// (0.05): older measured efforts count as zero; initial_psi [rad] (0).
 /// In the node handle's namespace: robot_description (urdf/norma.urdf: masses and lengths).
 /// Subscribes actuators/state (efforts of pendulum_motor [N m] and slider_motor [N]). Publishes
@@ -37,7 +38,8 @@ class NormaPlantRos {
 
  private:
   void onActuatorState(const sensor_msgs::JointState& msg);
-  void tick(const ros::Time& now);
+  /// One step at now; returns the topics it published.
+  std::vector<std::string> tick(const ros::Time& now);
   void publishState(const ros::Time& now);
   void publishPose(const ros::Time& now);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
@@ -58,10 +60,10 @@ class NormaPlantRos {
   ros::Publisher state_pub_;
   ros::Publisher odom_pub_;
   ros::Publisher joint_pub_;
-  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  TfPublisher tf_broadcaster_;
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
-  std::unique_ptr<SimClock> clock_;  ///< last: it ticks only once everything else exists
+  std::unique_ptr<PlantClock> clock_;  ///< last: it ticks only once everything else exists
 };
 
 }  // namespace spherical_robots

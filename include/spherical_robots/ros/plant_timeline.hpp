@@ -17,7 +17,7 @@
 namespace spherical_robots {
 
 class InputMonitor;
-class SimClock;
+class PlantClock;
 
 class PlantTimeline {
  public:
@@ -52,9 +52,10 @@ class PlantTimeline {
   bool finished_ = false;
 };
 
-/// What every plant's diagnostics add after its own figures: the clock's "real-time factor", then
-/// timeline.report() and actuators.report(), which may raise the status to ERROR or WARN.
+/// What every plant's diagnostics add after its own figures: clock.report() (mode, real-time
+/// factor, lock-step participants), then timeline.report() and actuators.report(), each of which
+/// may raise the status to ERROR or WARN.
 void reportPlantHealth(diagnostic_updater::DiagnosticStatusWrapper& status, const ros::Time& now,
-                       const SimClock& clock, PlantTimeline& timeline, InputMonitor& actuators);
+                       PlantClock& clock, PlantTimeline& timeline, InputMonitor& actuators);
 
 }  // namespace spherical_robots

@@ -19,6 +19,7 @@
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/surface.hpp"
 
+#include "spherical_robots/ros/lockstep_participant.hpp"
 #include "spherical_robots/ros/timer_jump_guard.hpp"
 
 namespace spherical_robots {
@@ -54,6 +55,10 @@ class PurePursuitRos {
   void onTerrainState(const spherical_robots::TerrainState& msg);
   void onCmdVel(const geometry_msgs::Twist& msg);
   void onTimer(const ros::TimerEvent& event);
+  /// The periodic work at `now` (a timer's or a lock-step request's); returns what it published.
+  std::vector<std::string> control(const ros::Time& now);
+  /// ROS time, or in lock-step the time of the latest step.
+  ros::Time now() const;
   /// The set-points in tracking mode; zero without a fresh terrain_state.
   terrain::DriveRates track(const ros::Time& now);
   /// The set-points in teleop mode; zero without a fresh cmd_vel.
@@ -94,6 +99,7 @@ class PurePursuitRos {
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
   ros::Timer timer_;
   std::unique_ptr<TimerJumpGuard> timer_guard_;  ///< restarts timer_ after a clock jump
+  std::unique_ptr<LockstepParticipant> lockstep_;  ///< set instead of timer_ in lock-step
 };
 
 }  // namespace spherical_robots

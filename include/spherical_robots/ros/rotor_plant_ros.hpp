@@ -6,14 +6,15 @@
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
-#include <tf2_ros/transform_broadcaster.h>
 
 #include <memory>
+#include <vector>
 #include <string>
 
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/plant_timeline.hpp"
-#include "spherical_robots/ros/sim_clock.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
+#include "spherical_robots/ros/plant_clock.hpp"
 #include "spherical_robots/rotor/contact_kinematics.hpp"
 #include "spherical_robots/rotor/dynamic_realizability.hpp"
 
@@ -22,8 +23,8 @@ namespace spherical_robots {
 /// Parameters in the node handle's namespace (shared with rotor_planner): inertia_ratio k (2.5,
 /// > 0), rotor_inertia_scale J_zz / J_r (12).
 /// Private (~): sphere_radius R [m] (0.1); frame_prefix (""); step [s] (0.001): the tick and
-/// the RK4 step; publish_rate [Hz] (50): odom, joint_states, tf; publish_clock (false),
-/// speedup (1), wait_for_subscribers (1), start_timeout [s] (10): as terrain_kinematics; duration [s] (0 = forever); state_timeout [s]
+/// the RK4 step; publish_rate [Hz] (50): odom, joint_states, tf; clock ("ros"),
+/// speedup (free: 1), lockstep_timeout, wait_for_subscribers, start_timeout: as terrain_kinematics; duration [s] (0 = forever); state_timeout [s]
 /// (0.5): the rotors keep the last measured speeds (a late state message does not stop them:
 /// the flywheels spin on); older ones count as zero, as the hardware interface's command_timeout
 /// brings the rotors to rest.
@@ -39,7 +40,8 @@ class RotorPlantRos {
 
  private:
   void onActuatorState(const sensor_msgs::JointState& msg);
-  void tick(const ros::Time& now);
+  /// One step at now; returns the topics it published.
+  std::vector<std::string> tick(const ros::Time& now);
   void publishPose(const ros::Time& now);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
@@ -59,10 +61,10 @@ class RotorPlantRos {
   ros::Subscriber actuator_sub_;
   ros::Publisher odom_pub_;
   ros::Publisher joint_pub_;
-  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  TfPublisher tf_broadcaster_;
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
-  std::unique_ptr<SimClock> clock_;  ///< last: it ticks only once everything else exists
+  std::unique_ptr<PlantClock> clock_;  ///< last: it ticks only once everything else exists
 };
 
 }  // namespace spherical_robots

@@ -6,16 +6,17 @@
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
-#include <tf2_ros/transform_broadcaster.h>
 
 #include <Eigen/Geometry>
 #include <memory>
+#include <vector>
 #include <string>
 
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/trail.hpp"
 #include "spherical_robots/ros/plant_timeline.hpp"
-#include "spherical_robots/ros/sim_clock.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
+#include "spherical_robots/ros/plant_clock.hpp"
 #include "spherical_robots/terrain/surface.hpp"
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
 
@@ -25,8 +26,9 @@ namespace spherical_robots {
 /// * robot_type (3R | 2R | RT | RS, "3R"), contact_model (paper | rolling, "paper");
 /// * frame_prefix (""): prepended to every frame but `world`;
 /// * step [s] (0.01): integration step; publish_rate [Hz] (50): odom, tf and terrain_state;
-/// * publish_clock (false), speedup (10): own /clock at this speed-up (see SimClock); otherwise
-///   step on ROS time;
+/// * clock (lockstep | free | ros, "ros"), speedup (lockstep: a cap, 0 = none; free: the pace,
+///   10), lockstep_timeout [s] (2), wait_for_subscribers (1), start_timeout [s] (10): the clock
+///   mode (plant_clock.hpp, docs/lockstep.md);
 /// * duration [s] (0 = forever): at this much ROS time after the first step, log "scenario
 ///   complete" and shut the node down;
 /// * state_timeout [s] (0.5): older measured rates count as zero;
@@ -48,7 +50,8 @@ class TerrainPlantRos {
 
  private:
   void onActuatorState(const sensor_msgs::JointState& msg);
-  void tick(const ros::Time& now);
+  /// One step at now; returns the topics it published.
+  std::vector<std::string> tick(const ros::Time& now);
   /// Advances state_ and orientation_ by elapsed [s] in steps no longer than step_.
   void integrate(double elapsed, const terrain::DriveRates& rates);
   void publishState(const ros::Time& now, const terrain::DriveRates& rates);
@@ -76,10 +79,10 @@ class TerrainPlantRos {
   ros::Publisher odom_pub_;
   ros::Publisher state_pub_;
   ros::Publisher marker_pub_;
-  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  TfPublisher tf_broadcaster_;
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
-  std::unique_ptr<SimClock> clock_;  ///< last: it ticks only once everything else exists
+  std::unique_ptr<PlantClock> clock_;  ///< last: it ticks only once everything else exists
 };
 
 }  // namespace spherical_robots

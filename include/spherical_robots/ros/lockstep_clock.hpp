@@ -1,0 +1,96 @@
+#pragma once
+// The lock-step clock mode of a plant (plant_clock.hpp, docs/lockstep.md): the plant steps,
+// publishes /clock and its messages, then asks each participant of <ns>/lockstep/participants
+// in turn (lockstep/step) and waits for its acknowledgement (lockstep/ack), then for the
+// messages the participants published that the plant reads, and only then steps again. The
+// decisions are core/lockstep_sequencer.hpp's; this class is their transport, pace and services.
+
+#include <ros/callback_queue_interface.h>
+#include <ros/message_event.h>
+#include <ros/node_handle.h>
+#include <ros/publisher.h>
+#include <ros/service_server.h>
+#include <ros/subscriber.h>
+#include <ros/wall_timer.h>
+#include <std_srvs/Empty.h>
+#include <std_srvs/Trigger.h>
+
+#include <string>
+#include <vector>
+
+#include "spherical_robots/LockstepAck.h"
+#include "spherical_robots/core/lockstep_inputs.hpp"
+#include "spherical_robots/core/lockstep_sequencer.hpp"
+#include "spherical_robots/ros/plant_clock.hpp"
+
+namespace spherical_robots {
+
+class LockstepClock : public PlantClock {
+ public:
+  struct Settings {
+    double step = 0.01;        ///< [s] > 0
+    double speedup = 0.0;      ///< [-] cap on the pace; 0: as fast as the participants allow
+    double timeout = 2.0;      ///< [s] of wall time before a silent participant is dropped
+    double start_timeout = 10.0;  ///< [s] of wall time to wait for the participants to join
+    std::vector<std::string> participants;   ///< resolved node names, in order of work
+    std::vector<std::string> subscriptions;  ///< resolved topics the plant reads
+  };
+
+  /// Advertises /clock, lockstep/step, and the services lockstep/pause, lockstep/resume
+  /// (std_srvs/Empty) and lockstep/step_once (std_srvs/Trigger) in nh's namespace.
+  /// @throw std::invalid_argument on a bad setting, or if /use_sim_time is false.
+  LockstepClock(ros::NodeHandle nh, Settings settings, Tick tick, Ready ready);
+
+  ros::Time now() const override { return now_; }
+  double realTimeFactor() const override;
+  void received(const std::string& topic, const ros::Time& stamp) override;
+  void report(diagnostic_updater::DiagnosticStatusWrapper& status) override;
+  void finish() override;
+
+ protected:
+  const char* mode() const override { return "lockstep"; }
+
+ private:
+  void onAck(const ros::MessageEvent<spherical_robots::LockstepAck const>& event);
+  void poll(const ros::WallTimerEvent&);
+  /// Runs the next step now or when the pace allows, unless paused.
+  void schedule();
+  void runStep();
+  /// Hands out the step's requests until one must be waited for.
+  void pump();
+  /// Ends the step once the messages the plant waits for are in.
+  void finishIfInputsIn();
+  bool pause(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
+  bool resume(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
+  bool stepOnce(std_srvs::Trigger::Request&, std_srvs::Trigger::Response&);
+
+  Settings settings_;
+  Tick tick_;
+  Ready ready_;
+  LockstepSequencer sequencer_;
+  LockstepInputs inputs_;
+  ros::CallbackQueueInterface* queue_;
+  bool started_ = false;
+  bool scheduled_ = false;
+  bool awaiting_inputs_ = false;
+  bool paused_ = false;
+  bool finished_ = false;
+  int single_steps_ = 0;
+  ros::Time now_;
+  ros::Time first_step_;
+  ros::WallTime created_wall_;
+  ros::WallTime first_step_wall_;
+  ros::WallTime inputs_since_;
+  unsigned long forged_ = 0;
+  unsigned long unexpected_ = 0;
+  std::vector<std::string> dropped_;  ///< dropped since the last report
+  ros::Publisher clock_pub_;
+  ros::Publisher request_pub_;
+  ros::Subscriber ack_sub_;
+  ros::ServiceServer pause_srv_, resume_srv_, step_srv_;
+  ros::WallTimer poll_timer_;
+  ros::WallTimer pace_timer_;
+  ros::WallTimer finish_timer_;
+};
+
+}  // namespace spherical_robots

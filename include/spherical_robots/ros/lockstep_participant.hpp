@@ -1,0 +1,72 @@
+#pragma once
+// A node's side of lock-step simulated time (docs/lockstep.md). The stack's launch file lists
+// the loop's participants in <ns>/lockstep/participants; a listed node does its periodic work
+// when its plant asks for it on lockstep/step, not on a timer, takes the step's time from the
+// request, and acknowledges on lockstep/ack once it has published (stamped with the step's time)
+// everything it publishes for the step.
+
+#include <ros/node_handle.h>
+#include <ros/publisher.h>
+#include <ros/subscriber.h>
+#include <ros/wall_timer.h>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "spherical_robots/LockstepStep.h"
+#include "spherical_robots/core/lockstep_inputs.hpp"
+
+namespace spherical_robots {
+
+/// Whether this node is named in <ns>/lockstep/participants (nh's namespace): then it takes part
+/// in lock-step time. @throw std::invalid_argument if the parameter is not a list of names.
+bool isLockstepParticipant(const ros::NodeHandle& nh);
+/// <ns>/lockstep/participants resolved to node names, in order; empty if the parameter is unset.
+std::vector<std::string> lockstepParticipants(const ros::NodeHandle& nh);
+
+class LockstepParticipant {
+ public:
+  /// What the work of one step did: the topics it published (each message stamped with the
+  /// step's time) and the earliest step time it has work again (zero: the next step).
+  struct Done {
+    std::vector<std::string> published;
+    ros::Time next;
+  };
+  using Work = std::function<Done(const ros::Time& now)>;
+
+  /// @param subscriptions the topics the node reads (what a request may make it wait for).
+  /// Sends join requests, once every subscription is connected to a publisher, until the first
+  /// request, and again whenever no request has come for rejoin_after [s] of wall time (so a
+  /// dropped participant comes back).
+  LockstepParticipant(ros::NodeHandle nh, std::vector<ros::Subscriber> subscriptions, Work work,
+                      double rejoin_after = 1.0);
+
+  /// A message stamped `stamp` arrived on `topic` (call from the subscription's callback, after
+  /// the node took the message in).
+  void received(const std::string& topic, const ros::Time& stamp);
+  /// The time of the latest step worked at (zero before the first).
+  const ros::Time& now() const { return now_; }
+  unsigned long steps() const { return steps_; }
+
+ private:
+  void onRequest(const spherical_robots::LockstepStep& request);
+  void workIfReady();
+  void sendJoin(const ros::WallTimerEvent&);
+
+  std::string name_;
+  std::vector<ros::Subscriber> subscriptions_;
+  LockstepInputs inputs_;
+  Work work_;
+  double rejoin_after_;
+  std::optional<ros::Time> pending_;
+  ros::Time now_;
+  ros::WallTime last_request_wall_;
+  unsigned long steps_ = 0;
+  ros::Publisher ack_pub_;
+  ros::Subscriber request_sub_;
+  ros::WallTimer join_timer_;
+};
+
+}  // namespace spherical_robots

@@ -1,0 +1,152 @@
+#!/usr/bin/env python3
+"""Runs one stack twice in lock-step, one run after the other, each on its own ROS master and
+recorded to a bag, and asserts that the two runs published the same messages, value for value
+(docs/lockstep.md, "Repeatable"). The second run can have busy loops hogging the CPU beside it.
+The bags must also hold every message the loop publishes: as many as the step count says.
+
+As a rostest node (test/lockstep_repeat_terrain.test) the parameters are private (~stack,
+~duration, ~busy_loops, ~args); from a shell:
+    lockstep_repeat_check.py --stack terrain --duration 20 --busy-loops 2 [-- launch args]
+"""
+import argparse
+import io
+import os
+import shutil
+import socket
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import rosbag
+
+PKG = 'spherical_robots'
+
+# Per stack: its namespace, the topics compared, and the topic whose count is checked against the
+# step count with its rate [Hz].
+STACKS = {
+    'terrain': ('sphere', ['odom', 'terrain_state', 'actuators/command', 'actuators/state',
+                           'tracking_error', 'target'], ('odom', 50.0)),
+    'norma': ('norma', ['odom', 'norma_state', 'joint_states', 'actuators/command',
+                        'actuators/state', 'tracking_error'], ('norma_state', 1000.0)),
+}
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(('localhost', 0))
+        return s.getsockname()[1]
+
+
+def run_stack(stack, duration, extra_args, bag, busy_loops):
+    port = free_port()
+    env = dict(os.environ, ROS_MASTER_URI='http://localhost:%d' % port)
+    env['ROS_HOME'] = os.path.dirname(bag)
+    busy = [subprocess.Popen(['yes'], stdout=subprocess.DEVNULL) for _ in range(busy_loops)]
+    try:
+        command = ['roslaunch', '-p', str(port), PKG, '%s_stack.launch' % stack,
+                   'duration:=%g' % duration, 'record:=%s' % bag] + extra_args
+        log = open(bag + '.log', 'w')
+        child = subprocess.run(command, env=env, stdout=log, stderr=subprocess.STDOUT,
+                               timeout=60 + 20 * duration)
+        if child.returncode != 0:
+            raise AssertionError('%s failed with %d (log %s)' % (' '.join(command), child.returncode,
+                                                                 bag + '.log'))
+    finally:
+        for b in busy:
+            b.kill()
+            b.wait()
+
+
+def serialized(msg):
+    """The message's bytes with header.seq cleared (a publisher's counter, not the loop's data)."""
+    if hasattr(msg, 'header'):
+        msg.header.seq = 0
+    out = io.BytesIO()
+    msg.serialize(out)
+    return out.getvalue()
+
+
+def messages(bag_path, topics):
+    result = {topic: [] for topic in topics}
+    with rosbag.Bag(bag_path) as bag:
+        for topic, msg, _ in bag.read_messages(topics=topics):
+            result[topic].append(serialized(msg))
+    return result
+
+
+def transforms(bag_path, prefix):
+    """The /tf messages of the stack's frames, as (child frame, stamp, translation, rotation)."""
+    out = []
+    with rosbag.Bag(bag_path) as bag:
+        for _, msg, _ in bag.read_messages(topics=['/tf']):
+            for t in msg.transforms:
+                if t.child_frame_id.startswith(prefix):
+                    tr, rot = t.transform.translation, t.transform.rotation
+                    out.append((t.child_frame_id, t.header.stamp.to_nsec(),
+                                tr.x, tr.y, tr.z, rot.x, rot.y, rot.z, rot.w))
+    return out
+
+
+def compare(stack, duration, extra_args, busy_loops, workdir):
+    ns, topics, (count_topic, rate) = STACKS[stack]
+    names = ['/%s/%s' % (ns, t) for t in topics]
+    bags = [os.path.join(workdir, 'run%d.bag' % i) for i in (1, 2)]
+    run_stack(stack, duration, extra_args, bags[0], 0)
+    run_stack(stack, duration, extra_args, bags[1], busy_loops)
+    first, second = (messages(b, names) for b in bags)
+    report = []
+    for name in names:
+        a, b = first[name], second[name]
+        same = sum(1 for x, y in zip(a, b) if x == y)
+        report.append('%-32s %7d / %7d messages, %7d identical' % (name, len(a), len(b), same))
+        if len(a) != len(b) or same != len(a) or not a:
+            raise AssertionError('runs differ on %s:\n%s' % (name, '\n'.join(report)))
+    tf = [transforms(b, ns + '/') for b in bags]
+    report.append('%-32s %7d / %7d transforms' % ('/tf (%s/*)' % ns, len(tf[0]), len(tf[1])))
+    if tf[0] != tf[1] or not tf[0]:
+        raise AssertionError('runs differ on /tf:\n%s' % '\n'.join(report))
+    expected = int(round(duration * rate))
+    recorded = len(first['/%s/%s' % (ns, count_topic)])
+    report.append('%s: %d recorded, %d expected (%g s at %g Hz)' % (count_topic, recorded, expected,
+                                                                    duration, rate))
+    if abs(recorded - expected) > 1:
+        raise AssertionError('the bag lost messages:\n%s' % '\n'.join(report))
+    return '\n'.join(report)
+
+
+class LockstepRepeatability(unittest.TestCase):
+    def test_two_runs_publish_the_same_messages(self):
+        import rospy
+        rospy.init_node('lockstep_repeat_check', anonymous=True)
+        stack = rospy.get_param('~stack', 'terrain')
+        duration = float(rospy.get_param('~duration', 20.0))
+        busy_loops = int(rospy.get_param('~busy_loops', 2))
+        extra_args = str(rospy.get_param('~args', '')).split()
+        workdir = tempfile.mkdtemp(prefix='lockstep_repeat.')
+        print(compare(stack, duration, extra_args, busy_loops, workdir))
+        shutil.rmtree(workdir, ignore_errors=True)
+
+
+def main():
+    if any(a.startswith('__name:=') for a in sys.argv):  # started by rostest
+        import rostest
+        rostest.rosrun(PKG, 'lockstep_repeat_check', LockstepRepeatability)
+        return
+    parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
+    parser.add_argument('--stack', choices=sorted(STACKS), default='terrain')
+    parser.add_argument('--duration', type=float, default=20.0)
+    parser.add_argument('--busy-loops', type=int, default=2)
+    parser.add_argument('args', nargs='*', help='launch arguments, e.g. robot:=RS path:=diamond')
+    options = parser.parse_args()
+    workdir = tempfile.mkdtemp(prefix='lockstep_repeat.')
+    try:
+        print(compare(options.stack, options.duration, options.args, options.busy_loops, workdir))
+        print('repeatable: the two runs published the same messages')
+    except AssertionError as e:
+        sys.exit('NOT repeatable: %s (bags in %s)' % (e, workdir))
+    shutil.rmtree(workdir, ignore_errors=True)
+
+
+if __name__ == '__main__':
+    main()

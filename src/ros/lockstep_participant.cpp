@@ -1,0 +1,105 @@
+#include "spherical_robots/ros/lockstep_participant.hpp"
+
+#include <ros/console.h>
+#include <ros/this_node.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#include "spherical_robots/LockstepAck.h"
+
+namespace spherical_robots {
+namespace {
+
+const char* const kParticipantsParam = "lockstep/participants";
+
+std::vector<std::string> topicsOf(const std::vector<ros::Subscriber>& subscriptions) {
+  std::vector<std::string> topics;
+  for (const ros::Subscriber& subscription : subscriptions) topics.push_back(subscription.getTopic());
+  return topics;
+}
+
+}  // namespace
+
+std::vector<std::string> lockstepParticipants(const ros::NodeHandle& nh) {
+  XmlRpc::XmlRpcValue value;
+  std::vector<std::string> names;
+  if (!nh.getParam(kParticipantsParam, value)) return names;
+  const auto bad = [&] {
+    return std::invalid_argument("parameter " + nh.resolveName(kParticipantsParam) +
+                                 " must be a list of node names, e.g. [pure_pursuit_controller, "
+                                 "hardware_interface]");
+  };
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeArray) throw bad();
+  for (int i = 0; i < value.size(); ++i) {
+    if (value[i].getType() != XmlRpc::XmlRpcValue::TypeString) throw bad();
+    names.push_back(nh.resolveName(static_cast<std::string>(value[i])));
+  }
+  return names;
+}
+
+bool isLockstepParticipant(const ros::NodeHandle& nh) {
+  const std::vector<std::string> names = lockstepParticipants(nh);
+  return std::find(names.begin(), names.end(), ros::this_node::getName()) != names.end();
+}
+
+LockstepParticipant::LockstepParticipant(ros::NodeHandle nh, std::vector<ros::Subscriber> subscriptions,
+                                         Work work, double rejoin_after)
+    : name_(ros::this_node::getName()), subscriptions_(std::move(subscriptions)),
+      inputs_(topicsOf(subscriptions_)), work_(std::move(work)), rejoin_after_(rejoin_after) {
+  // Queues long enough that no request or acknowledgement is lost while a node is descheduled.
+  ack_pub_ = nh.advertise<spherical_robots::LockstepAck>("lockstep/ack", 100);
+  request_sub_ = nh.subscribe("lockstep/step", 100, &LockstepParticipant::onRequest, this,
+                              ros::TransportHints().tcpNoDelay());
+  join_timer_ = nh.createWallTimer(ros::WallDuration(0.25), &LockstepParticipant::sendJoin, this);
+  ROS_INFO_STREAM(name_ << " takes part in lock-step time (" << nh.resolveName("lockstep/step")
+                        << ")");
+}
+
+void LockstepParticipant::sendJoin(const ros::WallTimerEvent&) {
+  if (!last_request_wall_.isZero() &&
+      (ros::WallTime::now() - last_request_wall_).toSec() < rejoin_after_)
+    return;
+  // Joined before its inputs are connected, it would wait for messages that were never sent.
+  for (const ros::Subscriber& subscription : subscriptions_)
+    if (subscription.getNumPublishers() == 0) return;
+  spherical_robots::LockstepAck join;
+  join.participant = name_;
+  ack_pub_.publish(join);
+}
+
+void LockstepParticipant::received(const std::string& topic, const ros::Time& stamp) {
+  inputs_.received(topic, static_cast<std::int64_t>(stamp.toNSec()));
+  if (pending_) workIfReady();
+}
+
+void LockstepParticipant::onRequest(const spherical_robots::LockstepStep& request) {
+  if (request.participant != name_) return;
+  last_request_wall_ = ros::WallTime::now();
+  std::vector<PublishedTopic> inputs;
+  for (std::size_t i = 0; i < request.inputs.size() && i < request.input_stamps.size(); ++i)
+    inputs.push_back({request.inputs[i], static_cast<std::int64_t>(request.input_stamps[i].toNSec())});
+  if (pending_)
+    ROS_WARN_STREAM("lock-step: a request for " << request.stamp << " s replaces the one for "
+                                                << *pending_ << " s, whose inputs never came");
+  inputs_.expect(inputs);
+  pending_ = request.stamp;
+  workIfReady();
+}
+
+void LockstepParticipant::workIfReady() {
+  if (!inputs_.satisfied()) return;
+  now_ = *pending_;
+  pending_.reset();
+  const Done done = work_(now_);
+  ++steps_;
+  spherical_robots::LockstepAck ack;
+  ack.stamp = now_;
+  ack.participant = name_;
+  ack.published = done.published;
+  ack.next = done.next;
+  ack_pub_.publish(ack);
+}
+
+}  // namespace spherical_robots
