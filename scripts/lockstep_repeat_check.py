@@ -22,13 +22,16 @@ import rosbag
 
 PKG = 'spherical_robots'
 
-# Per stack: its namespace, the topics compared, and the topic whose count is checked against the
-# step count with its rate [Hz].
+# Per stack: its namespace, the topics compared, the topic whose count is checked against the
+# step count with its rate [Hz], and whether the bag must hold every message. Norma's 1 kHz
+# topics overflow rosbag record's subscriber queue (100 messages, fixed in rosbag) whenever the
+# recorder is descheduled for 0.1 s, even at real time with busy loops beside it: there the
+# messages of the steps both bags hold are compared, and the losses reported (docs/lockstep.md).
 STACKS = {
     'terrain': ('sphere', ['odom', 'terrain_state', 'actuators/command', 'actuators/state',
-                           'tracking_error', 'target'], ('odom', 50.0)),
+                           'tracking_error', 'target'], ('odom', 50.0), True),
     'norma': ('norma', ['odom', 'norma_state', 'joint_states', 'actuators/command',
-                        'actuators/state', 'tracking_error'], ('norma_state', 1000.0)),
+                        'actuators/state', 'tracking_error'], ('norma_state', 1000.0), False),
 }
 
 
@@ -68,10 +71,11 @@ def serialized(msg):
 
 
 def messages(bag_path, topics):
-    result = {topic: [] for topic in topics}
+    """Per topic: stamp [ns] -> the message's bytes (the loop publishes one per topic and step)."""
+    result = {topic: {} for topic in topics}
     with rosbag.Bag(bag_path) as bag:
         for topic, msg, _ in bag.read_messages(topics=topics):
-            result[topic].append(serialized(msg))
+            result[topic][msg.header.stamp.to_nsec()] = serialized(msg)
     return result
 
 
@@ -89,7 +93,7 @@ def transforms(bag_path, prefix):
 
 
 def compare(stack, duration, extra_args, busy_loops, workdir):
-    ns, topics, (count_topic, rate) = STACKS[stack]
+    ns, topics, (count_topic, rate), lossless = STACKS[stack]
     names = ['/%s/%s' % (ns, t) for t in topics]
     bags = [os.path.join(workdir, 'run%d.bag' % i) for i in (1, 2)]
     run_stack(stack, duration, extra_args, bags[0], 0)
@@ -98,19 +102,24 @@ def compare(stack, duration, extra_args, busy_loops, workdir):
     report = []
     for name in names:
         a, b = first[name], second[name]
-        same = sum(1 for x, y in zip(a, b) if x == y)
-        report.append('%-32s %7d / %7d messages, %7d identical' % (name, len(a), len(b), same))
-        if len(a) != len(b) or same != len(a) or not a:
+        common = set(a) & set(b)
+        same = sum(1 for stamp in common if a[stamp] == b[stamp])
+        report.append('%-32s %7d / %7d messages, %7d of the same steps identical'
+                      % (name, len(a), len(b), same))
+        if same != len(common) or len(common) < 0.5 * max(len(a), len(b)):
             raise AssertionError('runs differ on %s:\n%s' % (name, '\n'.join(report)))
+        if lossless and len(a) != len(b):
+            raise AssertionError('a bag lost messages on %s:\n%s' % (name, '\n'.join(report)))
     tf = [transforms(b, ns + '/') for b in bags]
     report.append('%-32s %7d / %7d transforms' % ('/tf (%s/*)' % ns, len(tf[0]), len(tf[1])))
-    if tf[0] != tf[1] or not tf[0]:
+    common = set(tf[0]) & set(tf[1])
+    if (lossless and tf[0] != tf[1]) or len(common) < 0.5 * len(tf[0]) or not tf[0]:
         raise AssertionError('runs differ on /tf:\n%s' % '\n'.join(report))
     expected = int(round(duration * rate))
     recorded = len(first['/%s/%s' % (ns, count_topic)])
     report.append('%s: %d recorded, %d expected (%g s at %g Hz)' % (count_topic, recorded, expected,
                                                                     duration, rate))
-    if abs(recorded - expected) > 1:
+    if lossless and abs(recorded - expected) > 1:
         raise AssertionError('the bag lost messages:\n%s' % '\n'.join(report))
     return '\n'.join(report)
 

@@ -13,6 +13,9 @@ max_acceleration [rad/s^2], effort_limits ({name: max effort}: those actuators t
 command_timeout [s], rate [Hz], diagnostic_period [s], max_clock_step [s]; models_file
 must be empty (there are no actuator models here). A missing or
 malformed one is fatal at start-up (exit status 1, the message naming node and parameter).
+
+Listed in <ns>/lockstep/participants it takes part in lock-step time as docs/lockstep.md says,
+written from that text: it updates and publishes when asked on lockstep/step, not on a timer.
 """
 import collections
 import math
@@ -25,6 +28,8 @@ import rospy
 from diagnostic_msgs.msg import DiagnosticStatus
 from sensor_msgs.msg import JointState
 from std_msgs.msg import Bool
+
+from spherical_robots.msg import LockstepAck, LockstepStep
 
 
 IMPLAUSIBLE_FACTOR = 100.0  # a set-point beyond this many times its limit is rejected
@@ -115,7 +120,69 @@ class LoopbackHardware:
         self.state_pub = rospy.Publisher('actuators/state', JointState, queue_size=10)
         rospy.Subscriber('actuators/command', JointState, self.on_command, queue_size=10)
         rospy.Subscriber('estop', Bool, self.on_e_stop, queue_size=10)
-        self.timer = rospy.Timer(rospy.Duration(1.0 / rate), self.on_timer)
+        self.period = 1.0 / rate
+        participants = rospy.get_param('lockstep/participants', [])
+        self.lockstep = rospy.get_name() in [rospy.names.ns_join(rospy.get_namespace(), name)
+                                             for name in participants]
+        if self.lockstep:
+            self.command_topic = rospy.resolve_name('actuators/command')
+            self.received = {}     # topic -> latest stamp received [ns]
+            self.expected = {}     # topic -> stamp the pending request waits for [ns]
+            self.pending = None    # the stamp of the request not yet worked
+            self.step_time = None  # [s] the latest step worked at
+            self.last_request_wall = None
+            self.ack_pub = rospy.Publisher('lockstep/ack', LockstepAck, queue_size=100,
+                                           tcp_nodelay=True)
+            rospy.Subscriber('lockstep/step', LockstepStep, self.on_step, queue_size=100,
+                             tcp_nodelay=True)
+            threading.Thread(target=self.send_joins, daemon=True).start()
+        else:
+            self.timer = rospy.Timer(rospy.Duration(self.period), self.on_timer)
+
+    def send_joins(self):
+        """Asks to join every 0.25 s of wall time until a request comes, and again after 1 s
+        without one (docs/lockstep.md, "Joining")."""
+        while not rospy.is_shutdown():
+            time.sleep(0.25)
+            with self.lock:
+                quiet = (self.last_request_wall is None
+                         or time.time() - self.last_request_wall > 1.0)
+            if quiet and self.state_pub.get_num_connections() > 0:
+                self.ack_pub.publish(LockstepAck(participant=rospy.get_name()))
+
+    def on_step(self, request):
+        if request.participant != rospy.get_name():
+            return
+        with self.lock:
+            self.last_request_wall = time.time()
+            self.expected = {topic: stamp.to_nsec() for topic, stamp
+                             in zip(request.inputs, request.input_stamps)
+                             if topic == self.command_topic}
+            self.pending = request.stamp
+            self.work_if_ready()
+        self.updater.update()
+
+    def work_if_ready(self):
+        """With the lock held: the pending step's work once its inputs are in."""
+        if self.pending is None or any(self.received.get(topic, -1) < stamp
+                                       for topic, stamp in self.expected.items()):
+            return
+        stamp, self.pending = self.pending, None
+        self.step_time = stamp.to_sec()
+        self.advance(self.step_time)
+        self.publish(self.step_time)
+        self.ack_pub.publish(LockstepAck(stamp=stamp, participant=rospy.get_name(),
+                                         published=[self.state_pub.resolved_name],
+                                         next=stamp + rospy.Duration(self.period)))
+
+    def command_time(self, msg):
+        """ROS time; in lock-step the command's stamp if it is within a second ahead of the
+        latest step (the controller stamps its commands with their step), else that step."""
+        if not self.lockstep:
+            return rospy.get_time()
+        step = self.step_time if self.step_time is not None else 0.0
+        stamp = msg.header.stamp.to_sec()
+        return stamp if step < stamp <= step + 1.0 else step
 
     def advance(self, now):
         """Moves every velocity towards its set-point at max_acceleration and integrates the
@@ -183,37 +250,45 @@ class LoopbackHardware:
         return max(-self.max_velocity, min(self.max_velocity, msg.velocity[k]))
 
     def on_command(self, msg):
-        now = rospy.get_time()
         with self.lock:
-            reason = self.rejection(msg)
-            if reason is not None:
-                self.rejected += 1
-                self.last_rejection = reason
-                wall = time.time()
-                self.rejection_times.append(wall)
-                self.last_rejection_wall = wall
-                self.accepted_since_rejection = False
-                rospy.logerr_throttle(1.0, 'loopback hardware: command rejected: ' + reason)
-                return
-            self.advance(now)
-            for k, name in enumerate(msg.name):
-                i = self.names.index(name)
-                self.setpoints[i] = self.setpoint_of(msg, k)
-                requested = msg.effort[k] if name in self.effort_limits else msg.velocity[k]
-                if self.setpoints[i] != requested:
-                    self.saturations[i] += 1
-                if name in self.effort_limits:
-                    self.efforts[i] = self.setpoints[i]
-            self.accepted += 1
-            self.accepted_since_rejection = True
-            self.last_accepted = now
-            self.timed_out = False
+            self.take_command(msg)
+            if self.lockstep:
+                stamp = msg.header.stamp.to_nsec()
+                self.received[self.command_topic] = max(stamp, self.received.get(self.command_topic, -1))
+                self.work_if_ready()
+
+    def take_command(self, msg):
+        """With the lock held: checks the command and follows its set-points."""
+        now = self.command_time(msg)
+        reason = self.rejection(msg)
+        if reason is not None:
+            self.rejected += 1
+            self.last_rejection = reason
+            wall = time.time()
+            self.rejection_times.append(wall)
+            self.last_rejection_wall = wall
+            self.accepted_since_rejection = False
+            rospy.logerr_throttle(1.0, 'loopback hardware: command rejected: ' + reason)
+            return
+        self.advance(now)
+        for k, name in enumerate(msg.name):
+            i = self.names.index(name)
+            self.setpoints[i] = self.setpoint_of(msg, k)
+            requested = msg.effort[k] if name in self.effort_limits else msg.velocity[k]
+            if self.setpoints[i] != requested:
+                self.saturations[i] += 1
+            if name in self.effort_limits:
+                self.efforts[i] = self.setpoints[i]
+        self.accepted += 1
+        self.accepted_since_rejection = True
+        self.last_accepted = now
+        self.timed_out = False
 
     def on_e_stop(self, msg):
         with self.lock:
             if msg.data == self.e_stopped:
                 return
-            now = rospy.get_time()
+            now = self.step_time if self.lockstep and self.step_time is not None else rospy.get_time()
             self.advance(now)
             self.e_stopped = msg.data
             self.setpoints = [0.0] * len(self.names)

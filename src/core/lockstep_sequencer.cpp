@@ -134,6 +134,9 @@ AckOutcome LockstepSequencer::acknowledge(const std::string& sender, const std::
   ++record_of.acknowledged;
   record_of.next = next;
   record(published);
+  // What it published itself is nothing new to it.
+  record_of.seen.resize(publications_.size(), 0);
+  for (const std::string& topic : published) record_of.seen[topicIndex(topic)] = publications_[topicIndex(topic)];
   awaited_.reset();
   return AckOutcome::kAccepted;
 }

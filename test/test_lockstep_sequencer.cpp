@@ -1,0 +1,173 @@
+// The lock-step barrier's decisions (core/lockstep_sequencer.hpp, core/lockstep_inputs.hpp,
+// docs/lockstep.md): order of work, what each participant is told to wait for, skipped steps,
+// forged, repeated and out-of-order acknowledgements, drops after silence, rejoining.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "spherical_robots/core/lockstep_inputs.hpp"
+#include "spherical_robots/core/lockstep_sequencer.hpp"
+
+namespace spherical_robots {
+namespace {
+
+constexpr std::int64_t kStep = 10'000'000;  // [ns] 0.01 s
+const std::string kPlant = "/sphere/terrain_kinematics";
+const std::string kController = "/sphere/pure_pursuit_controller";
+const std::string kHardware = "/sphere/hardware_interface";
+
+LockstepSequencer terrainLoop() {
+  LockstepSequencer sequencer(kPlant, {kController, kHardware}, 2.0);
+  sequencer.join(kController);
+  sequencer.join(kHardware);
+  return sequencer;
+}
+
+bool lists(const StepRequest& request, const std::string& topic, std::int64_t stamp) {
+  for (const PublishedTopic& input : request.inputs)
+    if (input.topic == topic && input.stamp == stamp) return true;
+  return false;
+}
+
+TEST(LockstepSequencer, AsksEachParticipantInOrderWithWhatWasPublishedSinceItLastWorked) {
+  LockstepSequencer sequencer = terrainLoop();
+  ASSERT_TRUE(sequencer.allExpectedJoined());
+  sequencer.beginStep(kStep, {"/sphere/terrain_state"}, 0.0);
+
+  const auto controller = sequencer.nextRequest(0.0);
+  ASSERT_TRUE(controller);
+  EXPECT_EQ(controller->participant, kController);
+  EXPECT_TRUE(lists(*controller, "/sphere/terrain_state", kStep));
+  EXPECT_FALSE(sequencer.nextRequest(0.0)) << "one participant at a time";
+  EXPECT_EQ(sequencer.acknowledge(kController, kController, kStep, {"/sphere/actuators/command"}, 0),
+            AckOutcome::kAccepted);
+
+  const auto hardware = sequencer.nextRequest(0.0);
+  ASSERT_TRUE(hardware);
+  EXPECT_EQ(hardware->participant, kHardware);
+  EXPECT_TRUE(lists(*hardware, "/sphere/actuators/command", kStep));
+  EXPECT_TRUE(lists(*hardware, "/sphere/terrain_state", kStep));
+  EXPECT_EQ(sequencer.acknowledge(kHardware, kHardware, kStep, {"/sphere/actuators/state"}, 0),
+            AckOutcome::kAccepted);
+
+  const auto plant = sequencer.nextRequest(0.0);
+  ASSERT_TRUE(plant);
+  EXPECT_EQ(plant->participant, kPlant) << "the plant's own request ends the step";
+  EXPECT_TRUE(lists(*plant, "/sphere/actuators/state", kStep));
+  EXPECT_FALSE(sequencer.nextRequest(0.0));
+  sequencer.endStep();
+
+  // Next step: the controller is told of the actuator state the hardware published after it.
+  sequencer.beginStep(2 * kStep, {}, 0.0);
+  const auto again = sequencer.nextRequest(0.0);
+  ASSERT_TRUE(again);
+  EXPECT_TRUE(lists(*again, "/sphere/actuators/state", kStep));
+  EXPECT_FALSE(lists(*again, "/sphere/terrain_state", kStep)) << "already told of it";
+  EXPECT_FALSE(lists(*again, "/sphere/actuators/command", kStep)) << "its own, nothing new";
+}
+
+TEST(LockstepSequencer, SkipsAParticipantUntilTheStepItAskedFor) {
+  LockstepSequencer sequencer = terrainLoop();
+  sequencer.beginStep(kStep, {}, 0.0);
+  ASSERT_EQ(sequencer.nextRequest(0.0)->participant, kController);
+  sequencer.acknowledge(kController, kController, kStep, {}, 3 * kStep);
+  ASSERT_EQ(sequencer.nextRequest(0.0)->participant, kHardware);
+  sequencer.acknowledge(kHardware, kHardware, kStep, {}, 0);
+  ASSERT_EQ(sequencer.nextRequest(0.0)->participant, kPlant);
+  sequencer.endStep();
+  sequencer.beginStep(2 * kStep, {}, 0.0);
+  EXPECT_EQ(sequencer.nextRequest(0.0)->participant, kHardware) << "the controller is not due";
+  sequencer.acknowledge(kHardware, kHardware, 2 * kStep, {}, 0);
+  sequencer.nextRequest(0.0);
+  sequencer.endStep();
+  sequencer.beginStep(3 * kStep, {}, 0.0);
+  EXPECT_EQ(sequencer.nextRequest(0.0)->participant, kController) << "due again at 3 steps";
+}
+
+TEST(LockstepSequencer, ForgedRepeatedAndOutOfOrderAcknowledgementsDoNotMoveTheBarrier) {
+  LockstepSequencer sequencer = terrainLoop();
+  sequencer.beginStep(kStep, {}, 0.0);
+  ASSERT_EQ(sequencer.nextRequest(0.0)->participant, kController);
+  // A third node claims to be the controller.
+  EXPECT_EQ(sequencer.acknowledge("/intruder", kController, kStep, {}, 0), AckOutcome::kForged);
+  // The hardware answers before its turn; a stale and a future step.
+  EXPECT_EQ(sequencer.acknowledge(kHardware, kHardware, kStep, {}, 0), AckOutcome::kUnexpected);
+  EXPECT_EQ(sequencer.acknowledge(kController, kController, 0, {}, 0), AckOutcome::kUnexpected);
+  EXPECT_EQ(sequencer.acknowledge(kController, kController, 5 * kStep, {}, 0),
+            AckOutcome::kUnexpected);
+  ASSERT_NE(sequencer.awaited(), nullptr);
+  EXPECT_EQ(*sequencer.awaited(), kController) << "still waiting for the real one";
+  EXPECT_EQ(sequencer.acknowledge(kController, kController, kStep, {}, 0), AckOutcome::kAccepted);
+  EXPECT_EQ(sequencer.nextRequest(0.0)->participant, kHardware);
+  // Repeated: the barrier has moved on to the hardware.
+  EXPECT_EQ(sequencer.acknowledge(kController, kController, kStep, {}, 0), AckOutcome::kUnexpected);
+  ASSERT_NE(sequencer.awaited(), nullptr);
+  EXPECT_EQ(*sequencer.awaited(), kHardware);
+}
+
+TEST(LockstepSequencer, DropsASilentParticipantAfterTheTimeoutAndTakesItBackWhenItRejoins) {
+  LockstepSequencer sequencer = terrainLoop();
+  sequencer.beginStep(kStep, {}, 100.0);
+  ASSERT_EQ(sequencer.nextRequest(100.0)->participant, kController);
+  EXPECT_FALSE(sequencer.dropSilent(101.9));
+  const auto dropped = sequencer.dropSilent(102.1);
+  ASSERT_TRUE(dropped);
+  EXPECT_EQ(*dropped, kController);
+  EXPECT_FALSE(sequencer.allExpectedJoined());
+  // Time goes on: the hardware is asked next, and without the controller on later steps.
+  EXPECT_EQ(sequencer.nextRequest(102.1)->participant, kHardware);
+  sequencer.acknowledge(kHardware, kHardware, kStep, {}, 0);
+  sequencer.nextRequest(102.1);
+  sequencer.endStep();
+  sequencer.beginStep(2 * kStep, {}, 102.2);
+  EXPECT_EQ(sequencer.nextRequest(102.2)->participant, kHardware);
+  sequencer.acknowledge(kHardware, kHardware, 2 * kStep, {}, 0);
+  sequencer.nextRequest(102.2);
+  sequencer.endStep();
+  // Its late answer does not count; its join does.
+  EXPECT_EQ(sequencer.acknowledge(kController, kController, kStep, {}, 0), AckOutcome::kUnexpected);
+  EXPECT_TRUE(sequencer.join(kController));
+  EXPECT_FALSE(sequencer.join(kController)) << "a repeated join changes nothing";
+  sequencer.beginStep(3 * kStep, {}, 103.0);
+  EXPECT_EQ(sequencer.nextRequest(103.0)->participant, kController);
+  EXPECT_EQ(sequencer.participants()[0].drops, 1u);
+}
+
+TEST(LockstepSequencer, RejectsABadTimeoutARepeatedNameAndAStepThatDoesNotAdvance) {
+  EXPECT_THROW(LockstepSequencer(kPlant, {kController}, 0.0), std::invalid_argument);
+  EXPECT_THROW(LockstepSequencer(kPlant, {kController, kController}, 1.0), std::invalid_argument);
+  LockstepSequencer sequencer = terrainLoop();
+  sequencer.beginStep(kStep, {}, 0.0);
+  EXPECT_THROW(sequencer.beginStep(2 * kStep, {}, 0.0), std::logic_error) << "step in progress";
+  while (sequencer.nextRequest(0.0)) {
+    const std::string* awaited = sequencer.awaited();
+    if (!awaited) break;
+    sequencer.acknowledge(*awaited, *awaited, kStep, {}, 0);
+  }
+  sequencer.endStep();
+  EXPECT_THROW(sequencer.beginStep(kStep, {}, 0.0), std::logic_error) << "same time again";
+}
+
+TEST(LockstepInputs, WaitsForListedSubscriptionsWhicheverArrivesFirst) {
+  LockstepInputs inputs({"/sphere/actuators/command"});
+  // The data before the request.
+  inputs.received("/sphere/actuators/command", kStep);
+  inputs.expect({{"/sphere/actuators/command", kStep}, {"/sphere/terrain_state", kStep}});
+  EXPECT_TRUE(inputs.satisfied()) << "terrain_state is not one of its subscriptions";
+  // The request before the data.
+  inputs.expect({{"/sphere/actuators/command", 2 * kStep}});
+  EXPECT_FALSE(inputs.satisfied());
+  ASSERT_EQ(inputs.missing().size(), 1u);
+  inputs.received("/sphere/actuators/command", kStep);  // an old one again: not enough
+  EXPECT_FALSE(inputs.satisfied());
+  inputs.received("/sphere/actuators/command", 2 * kStep);
+  EXPECT_TRUE(inputs.satisfied());
+}
+
+}  // namespace
+}  // namespace spherical_robots
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
