@@ -170,7 +170,7 @@ class LoopbackHardware:
         stamp, self.pending = self.pending, None
         self.step_time = stamp.to_sec()
         self.advance(self.step_time)
-        self.publish(self.step_time)
+        self.publish(self.step_time, stamp)  # the exact stamp: a float round trip is 1 ns off
         self.ack_pub.publish(LockstepAck(stamp=stamp, participant=rospy.get_name(),
                                          published=[self.state_pub.resolved_name],
                                          next=stamp + rospy.Duration(self.period)))
@@ -308,10 +308,10 @@ class LoopbackHardware:
             self.publish(now)
         self.updater.update()
 
-    def publish(self, now):
+    def publish(self, now, stamp=None):
         state = JointState(name=list(self.names), position=list(self.positions),
                            velocity=list(self.velocities), effort=list(self.efforts))
-        state.header.stamp = rospy.Time.from_sec(now)
+        state.header.stamp = stamp if stamp is not None else rospy.Time.from_sec(now)
         self.state_pub.publish(state)
 
     def escalate(self, status):
