@@ -118,7 +118,8 @@ class LoopbackHardware:
         self.updater.setHardwareID('loopback')
         self.updater.add('actuators', self.diagnose)
         self.state_pub = rospy.Publisher('actuators/state', JointState, queue_size=10)
-        rospy.Subscriber('actuators/command', JointState, self.on_command, queue_size=10)
+        self.command_sub = rospy.Subscriber('actuators/command', JointState, self.on_command,
+                                            queue_size=10)
         rospy.Subscriber('estop', Bool, self.on_e_stop, queue_size=10)
         self.period = 1.0 / rate
         participants = rospy.get_param('lockstep/participants', [])
@@ -142,12 +143,17 @@ class LoopbackHardware:
     def send_joins(self):
         """Asks to join every 0.25 s of wall time until a request comes, and again after 1 s
         without one (docs/lockstep.md, "Joining")."""
+        connected_since = None  # its subscription's publisher may not send to it at once
         while not rospy.is_shutdown():
             time.sleep(0.25)
             with self.lock:
                 quiet = (self.last_request_wall is None
                          or time.time() - self.last_request_wall > 1.0)
-            if quiet and self.state_pub.get_num_connections() > 0:
+            if self.command_sub.get_num_connections() == 0:
+                connected_since = None
+            elif connected_since is None:
+                connected_since = time.time()
+            if quiet and connected_since is not None and time.time() - connected_since >= 1.0:
                 self.ack_pub.publish(LockstepAck(participant=rospy.get_name()))
 
     def on_step(self, request):

@@ -210,15 +210,16 @@ class TeleopCheck(StackFixture):
     """mode:=teleop: cmd_vel drives the 3R robot; stale or bad cmd_vel stops or is ignored."""
 
     def drive(self, twist, seconds):
-        """Publishes twist every 5 ms (wall) for `seconds` of simulated time: at 10x that is every
-        0.05 s simulated, well inside the 0.5 s cmd_vel timeout."""
+        """Publishes twist at 10 Hz of wall time, as a joystick does, for `seconds` of simulated
+        time: at 10x that is 1 s of simulated time apart, twice the 0.5 s cmd_vel timeout, which
+        counts wall time (a person's commands) and so keeps the robot moving."""
         publisher = rospy.Publisher('cmd_vel', Twist, queue_size=10)
         publish_when_connected(publisher, twist)
         end = rospy.Time.now().to_sec() + seconds
         deadline = time.time() + WALL_DEADLINE
         while rospy.Time.now().to_sec() < end and time.time() < deadline:
             publisher.publish(twist)
-            time.sleep(0.005)
+            time.sleep(0.1)
 
     def contact_point(self):
         c = self.states.last().contact_point
@@ -237,8 +238,10 @@ class TeleopCheck(StackFixture):
         self.drive(Twist(linear=Vector3(y=0.2)), 3.0)
         x2, y2 = self.contact_point()
         self.assertGreater(y2 - y1, 0.3, 'linear.y did not drive left')
-        # cmd_vel goes stale after 0.5 s: set-points become zero and the robot stops.
-        sim_sleep(2.0)
+        # cmd_vel goes stale after 0.5 s of wall time: set-points become zero and the robot
+        # stops (the actuators ramp down at 50 rad/s^2 within 0.4 s of simulated time).
+        time.sleep(1.0)
+        sim_sleep(0.5)
         x3, y3 = self.contact_point()
         sim_sleep(2.0)
         x4, y4 = self.contact_point()

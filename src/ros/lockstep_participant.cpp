@@ -62,8 +62,17 @@ void LockstepParticipant::sendJoin(const ros::WallTimerEvent&) {
       (ros::WallTime::now() - last_request_wall_).toSec() < rejoin_after_)
     return;
   // Joined before its inputs are connected, it would wait for messages that were never sent.
-  for (const ros::Subscriber& subscription : subscriptions_)
-    if (subscription.getNumPublishers() == 0) return;
+  // A subscriber sees a publisher before that publisher has finished its side of the
+  // connection and sends to it, so it waits a second more.
+  constexpr double kSettleTime = 1.0;  // [s] of wall time
+  for (const ros::Subscriber& subscription : subscriptions_) {
+    if (subscription.getNumPublishers() == 0) {
+      connected_since_ = ros::WallTime();
+      return;
+    }
+  }
+  if (connected_since_.isZero()) connected_since_ = ros::WallTime::now();
+  if ((ros::WallTime::now() - connected_since_).toSec() < kSettleTime) return;
   spherical_robots::LockstepAck join;
   join.participant = name_;
   ack_pub_.publish(join);

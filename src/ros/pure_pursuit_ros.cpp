@@ -41,6 +41,7 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       clock_(positiveParam(pnh, "max_clock_step", kDefaultMaxClockStep)),
       input_(nh.resolveName(mode_ == Mode::Tracking ? "terrain_state" : "cmd_vel"),
              positiveParam(pnh, "input_timeout", 0.5)),
+      input_timeout_(positiveParam(pnh, "input_timeout", 0.5)),
       updater_(nh, pnh) {
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
   controller_ = config::makePursuitController(
@@ -118,7 +119,8 @@ void PurePursuitRos::onCmdVel(const geometry_msgs::Twist& msg) {
   try {
     const conversions::PlanarTwist twist = conversions::planarTwist(msg, max_cmd_vel_);
     request_ = twist.request;
-    input_.accept(ros::Time::now());
+    input_.accept(now());
+    last_cmd_vel_wall_ = ros::WallTime::now();
     warnIgnoredOnce(twist.ignored);
   } catch (const std::invalid_argument& e) {
     input_.reject(e.what());
@@ -149,7 +151,7 @@ std::vector<std::string> PurePursuitRos::control(const ros::Time& now) {
                                           << " s; the reference continues where it was");
   }
   try {
-    command_ = mode_ == Mode::Tracking ? track(now) : teleop(now);
+    command_ = mode_ == Mode::Tracking ? track(now) : teleop();
   } catch (const std::exception& e) {
     ++failures_;
     command_ = terrain::DriveRates{};
@@ -187,8 +189,12 @@ terrain::DriveRates PurePursuitRos::track(const ros::Time& now) {
   return rates;
 }
 
-terrain::DriveRates PurePursuitRos::teleop(const ros::Time& now) {
-  if (!input_.fresh(now)) return {};
+terrain::DriveRates PurePursuitRos::teleop() {
+  // A person's command timeout counts wall time: at 10x real time, cmd_vel at 10 Hz of wall time
+  // would otherwise be 1 s of simulated time apart, twice the timeout.
+  if (last_cmd_vel_wall_.isZero() ||
+      (ros::WallTime::now() - last_cmd_vel_wall_).toSec() > input_timeout_)
+    return {};
   const terrain::TeleopCommand command = teleop_mapping_->command(request_, tilt_);
   // Named as cmd_vel fields, which is what the operator sends.
   std::vector<std::string> fields;

@@ -37,7 +37,7 @@ class LockstepParticipant {
   using Work = std::function<Done(const ros::Time& now)>;
 
   /// @param subscriptions the topics the node reads (what a request may make it wait for).
-  /// Sends join requests, once every subscription is connected to a publisher, until the first
+  /// Sends join requests, once every subscription has had a publisher for a second, until the first
   /// request, and again whenever no request has come for rejoin_after [s] of wall time (so a
   /// dropped participant comes back).
   LockstepParticipant(ros::NodeHandle nh, std::vector<ros::Subscriber> subscriptions, Work work,
@@ -63,6 +63,7 @@ class LockstepParticipant {
   std::optional<ros::Time> pending_;
   ros::Time now_;
   ros::WallTime last_request_wall_;
+  ros::WallTime connected_since_;  ///< since when every subscription has a publisher
   unsigned long steps_ = 0;
   ros::Publisher ack_pub_;
   ros::Subscriber request_sub_;

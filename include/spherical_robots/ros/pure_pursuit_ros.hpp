@@ -26,7 +26,8 @@ namespace spherical_robots {
 
 /// Parameters (private, ~): robot_type (3R | 2R | RT | RS, "3R"); mode (tracking | teleop,
 /// "tracking"); path (circle | diamond, "circle"); rate [Hz] (50); input_timeout [s] (0.5): an
-/// older terrain_state or cmd_vel counts as absent and the command is zero; plausibility bounds
+/// older terrain_state (ROS time) or cmd_vel (wall time: a person's commands, at any pace of
+/// simulated time) counts as absent and the command is zero; plausibility bounds
 /// max_position [m] (1000) of terrain_state's points, max_cmd_vel [m/s, rad/s] (10) of each
 /// cmd_vel field, max_stamp_skew [s] (1) between a terrain_state's stamp and the clock (and a
 /// zero stamp) beyond which the message is rejected; max_clock_step [s] (5): a longer step of
@@ -62,7 +63,7 @@ class PurePursuitRos {
   /// The set-points in tracking mode; zero without a fresh terrain_state.
   terrain::DriveRates track(const ros::Time& now);
   /// The set-points in teleop mode; zero without a fresh cmd_vel.
-  terrain::DriveRates teleop(const ros::Time& now);
+  terrain::DriveRates teleop();
   /// Logs once per field that cmd_vel asks for something this robot cannot do.
   void warnIgnoredOnce(const std::vector<std::string>& fields);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
@@ -89,6 +90,8 @@ class PurePursuitRos {
   ClockJumpDetector clock_;
 
   InputMonitor input_;  ///< terrain_state (tracking) or cmd_vel (teleop)
+  double input_timeout_;            ///< [s]
+  ros::WallTime last_cmd_vel_wall_;  ///< arrival of the last good cmd_vel
   ros::Subscriber state_sub_;
   ros::Subscriber cmd_vel_sub_;
   ros::Publisher command_pub_;
