@@ -254,7 +254,8 @@ void HardwareInterfaceSimRos::commandCallback(const sensor_msgs::JointState::Con
     reported_timeout_ = false;
   } else {
     command_input_.reject(reason);  // the actuators keep the last good set-points
-  }  if (lockstep_) lockstep_->received(command_sub_.getTopic(), stamp);
+  }
+  if (lockstep_) lockstep_->received(command_sub_.getTopic(), stamp);
 }
 
 void HardwareInterfaceSimRos::eStopCallback(const std_msgs::Bool::ConstPtr& msg) {
