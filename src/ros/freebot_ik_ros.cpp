@@ -20,7 +20,6 @@ namespace {
 constexpr double kNotMeasured = -1.0;
 
 
-const std::string kWorldFrame = "world";
 // Goals come from rviz (float32 quaternions) and from people typing 4-digit quaternions.
 constexpr double kGoalUnitTolerance = 1e-3;
 

@@ -39,6 +39,10 @@ std::vector<std::string> lockstepParticipants(const ros::NodeHandle& nh) {
   return names;
 }
 
+ros::Time workingTime(const LockstepParticipant* participant) {
+  return participant ? participant->now() : ros::Time::now();
+}
+
 bool isLockstepParticipant(const ros::NodeHandle& nh) {
   const std::vector<std::string> names = lockstepParticipants(nh);
   return std::find(names.begin(), names.end(), ros::this_node::getName()) != names.end();

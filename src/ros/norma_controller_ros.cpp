@@ -1,7 +1,6 @@
 #include "spherical_robots/ros/norma_controller_ros.hpp"
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
-#include "spherical_robots/ros/loop_publishers.hpp"
 
 #include <geometry_msgs/PointStamped.h>
 #include <nav_msgs/Path.h>
@@ -22,7 +21,6 @@
 namespace spherical_robots {
 namespace {
 
-const std::string kWorldFrame = "world";
 constexpr double kPathPeriod = 200.0 * M_PI;  // [s] eq 52 repeats after 2π / 0.01
 constexpr int kDesiredPathSamples = 2000;
 constexpr double kLateAge = 0.002;           // [s] two 1 ms ticks: the delay the 1 kHz loop is built for
@@ -70,9 +68,9 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       input_(nh.resolveName("norma_state"), positiveParam(pnh, "input_timeout", 0.05)),
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "input_timeout", 0.05)),
       updater_(nh, pnh) {
-  command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", kLoopQueueSize);
-  error_pub_ = nh.advertise<spherical_robots::TrackingError>("tracking_error", kLoopQueueSize);
-  target_pub_ = nh.advertise<geometry_msgs::PointStamped>("target", kLoopQueueSize);
+  command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
+  error_pub_ = step_publications_.advertise<spherical_robots::TrackingError>(nh, "tracking_error");
+  target_pub_ = step_publications_.advertise<geometry_msgs::PointStamped>(nh, "target");
   desired_path_pub_ = nh.advertise<nav_msgs::Path>("desired_path", 1, true);
   desired_path_pub_.publish(desiredPath(ros::Time::now()));
   state_sub_ = nh.subscribe("norma_state", 10, &NormaControllerRos::onState, this);
@@ -108,7 +106,7 @@ void NormaControllerRos::onActuatorState(const sensor_msgs::JointState& msg) {
   if (lockstep_) lockstep_->received(actuator_sub_.getTopic(), msg.header.stamp);
 }
 
-ros::Time NormaControllerRos::now() const { return lockstep_ ? lockstep_->now() : ros::Time::now(); }
+ros::Time NormaControllerRos::now() const { return workingTime(lockstep_.get()); }
 
 void NormaControllerRos::onState(const spherical_robots::NormaState& msg) {
   if (!lockstep_) {
@@ -144,7 +142,6 @@ std::vector<std::string> NormaControllerRos::control(const spherical_robots::Nor
   command.name = kActuators;
   command.effort = {output.torque, output.force};
   command_pub_.publish(command);
-  std::vector<std::string> published = {command_pub_.getTopic()};
   const double age = (this->now() - now).toSec();
   max_state_age_ = std::max(max_state_age_, age);
   if (age > kLateAge) {
@@ -172,9 +169,8 @@ std::vector<std::string> NormaControllerRos::control(const spherical_robots::Nor
     target.header = error.header;
     target.point = error.desired;
     target_pub_.publish(target);
-    published.insert(published.end(), {error_pub_.getTopic(), target_pub_.getTopic()});
   }
-  return published;
+  return step_publications_.take();
 }
 
 void NormaControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

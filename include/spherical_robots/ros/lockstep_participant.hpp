@@ -26,6 +26,12 @@ bool isLockstepParticipant(const ros::NodeHandle& nh);
 /// <ns>/lockstep/participants resolved to node names, in order; empty if the parameter is unset.
 std::vector<std::string> lockstepParticipants(const ros::NodeHandle& nh);
 
+class LockstepParticipant;
+
+/// The time a node works at: the step its lock-step participant works at, or ROS time if it takes
+/// no part (nullptr).
+ros::Time workingTime(const LockstepParticipant* participant);
+
 class LockstepParticipant {
  public:
   /// What the work of one step did: the topics it published (each message stamped with the

@@ -15,6 +15,7 @@
 #include "spherical_robots/norma/norma_control_loop.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/lockstep_participant.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 
 namespace spherical_robots {
 
@@ -63,9 +64,10 @@ class NormaControllerRos {
   /// In lock-step: the latest state, commanded from when its step's request comes.
   std::unique_ptr<LockstepParticipant> lockstep_;
   std::optional<spherical_robots::NormaState> latest_state_;
-  ros::Publisher command_pub_;
-  ros::Publisher error_pub_;
-  ros::Publisher target_pub_;
+  StepPublications step_publications_;
+  LoopPublisher command_pub_;
+  LoopPublisher error_pub_;
+  LoopPublisher target_pub_;
   ros::Publisher desired_path_pub_;
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
