@@ -67,6 +67,7 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
       input_(nh.resolveName("norma_state"), positiveParam(pnh, "input_timeout", 0.05)),
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "input_timeout", 0.05)),
+      work_([this](const spherical_robots::NormaState& msg) { control(msg); }, step_publications_),
       updater_(nh, pnh) {
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
   error_pub_ = step_publications_.advertise<spherical_robots::TrackingError>(nh, "tracking_error");
@@ -78,14 +79,7 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.setHardwareID("Norma");
   updater_.add("norma controller", this, &NormaControllerRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
-  if (isLockstepParticipant(nh)) {
-    lockstep_ = std::make_unique<LockstepParticipant>(
-        nh, std::vector<ros::Subscriber>{state_sub_, actuator_sub_}, [this](const ros::Time& now) {
-          LockstepParticipant::Done done;
-          if (latest_state_ && latest_state_->header.stamp == now) done.published = control(*latest_state_);
-          return done;
-        });
-  }
+  work_.join(nh, {state_sub_, actuator_sub_});
   ROS_INFO_STREAM("Norma controller: "
                   << (controller().kind() == norma::ControllerKind::kPaper
                           ? "paper (eqs 48-51, Table 1)"
@@ -103,21 +97,16 @@ void NormaControllerRos::onActuatorState(const sensor_msgs::JointState& msg) {
   } catch (const std::invalid_argument& e) {
     actuator_input_.reject(e.what());
   }
-  if (lockstep_) lockstep_->received(actuator_sub_.getTopic(), msg.header.stamp);
+  if (work_.participant()) work_.participant()->received(actuator_sub_.getTopic(), msg.header.stamp);
 }
 
-ros::Time NormaControllerRos::now() const { return workingTime(lockstep_.get()); }
+ros::Time NormaControllerRos::now() const { return workingTime(work_.participant()); }
 
 void NormaControllerRos::onState(const spherical_robots::NormaState& msg) {
-  if (!lockstep_) {
-    control(msg);
-    return;
-  }
-  latest_state_ = msg;
-  lockstep_->received(state_sub_.getTopic(), msg.header.stamp);
+  work_.arrived(msg, state_sub_.getTopic());
 }
 
-std::vector<std::string> NormaControllerRos::control(const spherical_robots::NormaState& msg) {
+void NormaControllerRos::control(const spherical_robots::NormaState& msg) {
   const ros::Time now = msg.header.stamp;
   norma::ControlOutput output;
   try {
@@ -134,7 +123,7 @@ std::vector<std::string> NormaControllerRos::control(const spherical_robots::Nor
     output = loop_.step(now.toSec(), state);
   } catch (const std::invalid_argument& e) {
     input_.reject(e.what());  // nothing commanded: the hardware keeps the last good efforts
-    return {};
+    return;
   }
   input_.accept(this->now());
   sensor_msgs::JointState command;
@@ -170,7 +159,6 @@ std::vector<std::string> NormaControllerRos::control(const spherical_robots::Nor
     target.point = error.desired;
     target_pub_.publish(target);
   }
-  return step_publications_.take();
 }
 
 void NormaControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

@@ -11,12 +11,14 @@
 #include <ros/wall_timer.h>
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "spherical_robots/LockstepStep.h"
 #include "spherical_robots/core/lockstep_inputs.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 
 namespace spherical_robots {
 
@@ -74,6 +76,53 @@ class LockstepParticipant {
   ros::Publisher ack_pub_;
   ros::Subscriber request_sub_;
   ros::WallTimer join_timer_;
+};
+
+/// A node that answers each message of one input at once (a relay, a message-driven
+/// controller), in either time: outside lock-step it handles a message when it arrives; as a
+/// listed participant it handles, at each step, the message stamped with the step's time if one
+/// came (whatever order the transport delivered it in), and acknowledges what that published.
+template <typename Message>
+class MessageDrivenWork {
+ public:
+  /// Handles one message, publishing through LoopPublishers of `publications`.
+  using Handle = std::function<void(const Message&)>;
+
+  MessageDrivenWork(Handle handle, StepPublications& publications)
+      : handle_(std::move(handle)), publications_(&publications) {}
+
+  /// Takes part in lock-step if nh's node is listed (call once the subscriptions exist; the
+  /// first is the input).
+  void join(ros::NodeHandle nh, std::vector<ros::Subscriber> subscriptions) {
+    if (!isLockstepParticipant(nh)) return;
+    participant_ = std::make_unique<LockstepParticipant>(
+        nh, std::move(subscriptions), [this](const ros::Time& now) {
+          LockstepParticipant::Done done;
+          if (latest_ && latest_->header.stamp == now) {
+            handle_(*latest_);
+            done.published = publications_->take();
+          }
+          return done;
+        });
+  }
+  /// From the input's callback.
+  void arrived(const Message& message, const std::string& topic) {
+    if (!participant_) {
+      handle_(message);
+      publications_->take();
+      return;
+    }
+    latest_ = message;
+    participant_->received(topic, message.header.stamp);
+  }
+  /// Null outside lock-step (another input's callback reports its messages to it).
+  LockstepParticipant* participant() const { return participant_.get(); }
+
+ private:
+  Handle handle_;
+  StepPublications* publications_;
+  std::optional<Message> latest_;
+  std::unique_ptr<LockstepParticipant> participant_;
 };
 
 }  // namespace spherical_robots
