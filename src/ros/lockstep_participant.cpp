@@ -105,7 +105,10 @@ void LockstepParticipant::workIfReady() {
   if (!inputs_.satisfied()) return;
   now_ = *pending_;
   pending_.reset();
-  const Done done = work_(now_);
+  if (const std::optional<Done> done = work_(now_)) answer(*done);
+}
+
+void LockstepParticipant::answer(const Done& done) {
   ++steps_;
   spherical_robots::LockstepAck ack;
   ack.stamp = now_;

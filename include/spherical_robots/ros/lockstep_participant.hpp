@@ -42,7 +42,8 @@ class LockstepParticipant {
     std::vector<std::string> published;
     ros::Time next;
   };
-  using Work = std::function<Done(const ros::Time& now)>;
+  /// The work of one step; nullopt: the step goes on elsewhere, and answer() ends it later.
+  using Work = std::function<std::optional<Done>(const ros::Time& now)>;
 
   /// @param subscriptions the topics the node reads (what a request may make it wait for).
   /// Sends join requests, once every subscription has had a publisher for a second, until the first
@@ -54,6 +55,8 @@ class LockstepParticipant {
   /// A message stamped `stamp` arrived on `topic` (call from the subscription's callback, after
   /// the node took the message in).
   void received(const std::string& topic, const ros::Time& stamp);
+  /// Acknowledges the step whose work returned nullopt.
+  void answer(const Done& done);
   /// The time of the latest step worked at (zero before the first).
   const ros::Time& now() const { return now_; }
   unsigned long steps() const { return steps_; }
