@@ -4,8 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
-#include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <random>
 
@@ -108,3 +109,8 @@ TEST(SinCos, LargeAndNonFiniteArgumentsAreStdSinAndCos) {
 }
 
 }  // namespace
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
