@@ -203,9 +203,9 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
   command_sub_ =
       nh.subscribe("actuators/command", 10, &HardwareInterfaceSimRos::commandCallback, this);
   e_stop_sub_ = nh.subscribe("estop", 10, &HardwareInterfaceSimRos::eStopCallback, this);
-  if (isLockstepParticipant(nh)) {
+  if (isLockstepParticipant(nh, pnh)) {
     lockstep_ = std::make_unique<LockstepParticipant>(
-        nh, std::vector<ros::Subscriber>{command_sub_}, [this, rate](const ros::Time& now) {
+        nh, pnh, std::vector<ros::Subscriber>{command_sub_}, [this, rate](const ros::Time& now) {
           update(now);
           return LockstepParticipant::Done{{state_pub_.getTopic()}, now + ros::Duration(1.0 / rate)};
         });

@@ -88,7 +88,7 @@ void LockstepClock::onAck(const ros::MessageEvent<spherical_robots::LockstepAck 
   const spherical_robots::LockstepAck& ack = *event.getConstMessage();
   const std::string& sender = event.getPublisherName();
   if (ack.stamp.isZero()) {
-    if (sender != ack.participant) {
+    if (!sequencer_.sentBy(sender, ack.participant)) {
       ++forged_;
       ROS_WARN_STREAM_THROTTLE(1.0, "lock-step: ignoring a join request for " << ack.participant
                                                                               << " sent by " << sender);

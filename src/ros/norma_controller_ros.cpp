@@ -80,9 +80,9 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.setHardwareID("Norma");
   updater_.add("norma controller", this, &NormaControllerRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
-  if (isLockstepParticipant(nh)) {
+  if (isLockstepParticipant(nh, pnh)) {
     lockstep_ = std::make_unique<LockstepParticipant>(
-        nh, std::vector<ros::Subscriber>{state_sub_, actuator_sub_}, [this](const ros::Time& now) {
+        nh, pnh, std::vector<ros::Subscriber>{state_sub_, actuator_sub_}, [this](const ros::Time& now) {
           LockstepParticipant::Done done;
           if (latest_state_ && latest_state_->header.stamp == now) done.published = control(*latest_state_);
           return done;

@@ -74,9 +74,9 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.add("pure pursuit controller", this, &PurePursuitRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
   const double period = 1.0 / positiveParam(pnh, "rate", 50.0);
-  if (isLockstepParticipant(nh)) {
+  if (isLockstepParticipant(nh, pnh)) {
     lockstep_ = std::make_unique<LockstepParticipant>(
-        nh, std::vector<ros::Subscriber>{state_sub_}, [this, period](const ros::Time& now) {
+        nh, pnh, std::vector<ros::Subscriber>{state_sub_}, [this, period](const ros::Time& now) {
           return LockstepParticipant::Done{control(now), now + ros::Duration(period)};
         });
     return;
