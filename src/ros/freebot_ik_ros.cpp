@@ -53,7 +53,7 @@ FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       last_drive_(chain_.moduleCount()),
       state_input_(nh.resolveName("freebot_state"), positiveParam(pnh, "input_timeout", 0.1)),
       goal_input_(nh.resolveName("goal"), 1e9),
-      updater_(nh, pnh) {
+      updater_(nh, pnh, pnh.getNamespace()) {
   ik_options_.position_tolerance =
       positiveParam(pnh, "ik/position_tolerance", ik_options_.position_tolerance);
   ik_options_.orientation_tolerance =

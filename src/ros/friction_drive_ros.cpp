@@ -57,7 +57,7 @@ FrictionDriveControllerRos::FrictionDriveControllerRos(ros::NodeHandle nh, ros::
       last_motor_rates_(2, 0.0),
       max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
       input_(nh.resolveName("drive/command"), positiveParam(pnh, "input_timeout", 0.5)),
-      updater_(nh, pnh) {
+      updater_(nh, pnh, pnh.getNamespace()) {
   command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", 10);
   command_sub_ = nh.subscribe("drive/command", 10, &FrictionDriveControllerRos::onDriveCommand, this);
   updater_.setHardwareID("friction drive");
@@ -94,7 +94,7 @@ FrictionDriveSimRos::FrictionDriveSimRos(ros::NodeHandle nh, ros::NodeHandle pnh
       marker_period_(1.0 / positiveParam(pnh, "marker_rate", 20.0)),
       max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
       input_(nh.resolveName("actuators/state"), positiveParam(pnh, "input_timeout", 0.5)),
-      updater_(nh, pnh) {
+      updater_(nh, pnh, pnh.getNamespace()) {
   drive_state_pub_ = nh.advertise<sensor_msgs::JointState>("drive/state", 10);
   drive_pub_ = nh.advertise<spherical_robots::RollerDrive>("roller_drive", 10);
   marker_pub_ = nh.advertise<visualization_msgs::MarkerArray>("roller_markers", 10);

@@ -191,7 +191,7 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
       command_input_(nh.resolveName("actuators/command"), actuators_.commandTimeout()),
       clock_(positiveParam(pnh, "max_clock_step", kDefaultMaxClockStep)),
       max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
-      updater_(nh, pnh) {
+      updater_(nh, pnh, pnh.getNamespace()) {
   const double rate = positiveParam(pnh, "rate", 100.0);
   state_msg_.name = actuators_.names();
 

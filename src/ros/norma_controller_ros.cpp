@@ -69,7 +69,7 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
       input_(nh.resolveName("norma_state"), positiveParam(pnh, "input_timeout", 0.05)),
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "input_timeout", 0.05)),
-      updater_(nh, pnh) {
+      updater_(nh, pnh, pnh.getNamespace()) {
   command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", kLoopQueueSize);
   error_pub_ = nh.advertise<spherical_robots::TrackingError>("tracking_error", kLoopQueueSize);
   target_pub_ = nh.advertise<geometry_msgs::PointStamped>("target", kLoopQueueSize);

@@ -42,7 +42,7 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       input_(nh.resolveName(mode_ == Mode::Tracking ? "terrain_state" : "cmd_vel"),
              positiveParam(pnh, "input_timeout", 0.5)),
       input_timeout_(positiveParam(pnh, "input_timeout", 0.5)),
-      updater_(nh, pnh) {
+      updater_(nh, pnh, pnh.getNamespace()) {
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
   controller_ = config::makePursuitController(
       parsedParam(pnh, "law", "smooth", terrain::pursuitLawFromString), type_, terrain_config,

@@ -57,7 +57,7 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       correction_tilt_tolerance_(positiveParam(pnh, "correction_tilt_tolerance", 1e-4)),
       correction_steps_(countParam(pnh, "correction_steps", 1, 1)),
       odom_input_(nh.resolveName("odom"), positiveParam(pnh, "odom_timeout", 0.5)),
-      updater_(nh, pnh),
+      updater_(nh, pnh, pnh.getNamespace()),
       driven_(nh, "driven_path", frame_id_, positiveParam(pnh, "path_period", 0.05),
               kMaxDrivenPoses, true) {
   if (samples_per_step_ < 1) {
