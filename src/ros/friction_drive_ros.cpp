@@ -13,6 +13,7 @@
 #include "spherical_robots/config/roller_config.hpp"
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
+#include "spherical_robots/ros/shared_message.hpp"
 #include "spherical_robots/ros/plant_clock.hpp"
 
 namespace spherical_robots {
@@ -74,7 +75,8 @@ void FrictionDriveControllerRos::onDriveCommand(const sensor_msgs::JointState& m
                                                                msg, max_actuator_rate_));
     last_motor_rates_.assign(motor_rates.begin(), motor_rates.end());
     input_.accept(ros::Time::now());
-    command_pub_.publish(conversions::velocityJointState(kMotorNames, last_motor_rates_, msg.header.stamp));
+    command_pub_.publish(
+        shared(conversions::velocityJointState(kMotorNames, last_motor_rates_, msg.header.stamp)));
   } catch (const std::invalid_argument& e) {
     input_.reject(e.what());  // nothing published: the hardware keeps the last good set-points
   }
@@ -118,8 +120,8 @@ void FrictionDriveSimRos::onActuatorState(const sensor_msgs::JointState& msg) {
   }
   last_state_ = state;
   input_.accept(ros::Time::now());
-  drive_state_pub_.publish(conversions::jointStateFromRates(
-      terrain::RobotType::TwoAxisRolling, roller::rollingRates(state.omega), msg.header.stamp));
+  drive_state_pub_.publish(shared(conversions::jointStateFromRates(
+      terrain::RobotType::TwoAxisRolling, roller::rollingRates(state.omega), msg.header.stamp)));
 
   spherical_robots::RollerDrive drive;
   drive.header.stamp = msg.header.stamp;

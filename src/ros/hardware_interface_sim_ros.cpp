@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "spherical_robots/ros/ros_parameter_source.hpp"
+#include "spherical_robots/ros/shared_message.hpp"
 
 namespace spherical_robots {
 
@@ -309,7 +310,7 @@ void HardwareInterfaceSimRos::publishState(const ros::Time& stamp) {
   state_msg_.position = actuators_.measuredPositions();
   state_msg_.velocity = actuators_.measuredVelocities();
   state_msg_.effort = actuators_.efforts();
-  state_pub_.publish(state_msg_);
+  state_pub_.publish(shared(state_msg_));
 }
 
 void HardwareInterfaceSimRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

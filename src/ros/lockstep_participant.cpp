@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "spherical_robots/LockstepAck.h"
+#include "spherical_robots/ros/shared_message.hpp"
 
 namespace spherical_robots {
 namespace {
@@ -108,7 +109,7 @@ void LockstepParticipant::workIfReady() {
   ack.participant = name_;
   ack.published = done.published;
   ack.next = done.next;
-  ack_pub_.publish(ack);
+  ack_pub_.publish(shared(std::move(ack)));
 }
 
 }  // namespace spherical_robots

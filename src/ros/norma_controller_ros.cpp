@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "spherical_robots/TrackingError.h"
 #include "spherical_robots/config/norma_description.hpp"
@@ -17,6 +18,7 @@
 #include "spherical_robots/norma/norma_simulation.hpp"
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
+#include "spherical_robots/ros/shared_message.hpp"
 #include "spherical_robots/ros/plant_clock.hpp"
 
 namespace spherical_robots {
@@ -143,7 +145,7 @@ std::vector<std::string> NormaControllerRos::control(const spherical_robots::Nor
   command.header.stamp = now;
   command.name = kActuators;
   command.effort = {output.torque, output.force};
-  command_pub_.publish(command);
+  command_pub_.publish(shared(std::move(command)));
   std::vector<std::string> published = {command_pub_.getTopic()};
   const double age = (this->now() - now).toSec();
   max_state_age_ = std::max(max_state_age_, age);

@@ -16,6 +16,7 @@
 #include "spherical_robots/config/terrain_config.hpp"
 #include "spherical_robots/core/validation.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
+#include "spherical_robots/ros/shared_message.hpp"
 
 namespace spherical_robots {
 namespace {
@@ -159,7 +160,7 @@ std::vector<std::string> PurePursuitRos::control(const ros::Time& now) {
                                                                 << " failures so far), commanding zero: "
                                                                 << e.what());
   }
-  command_pub_.publish(conversions::jointStateFromRates(type_, command_, now));
+  command_pub_.publish(shared(conversions::jointStateFromRates(type_, command_, now)));
   std::vector<std::string> published = {command_pub_.getTopic()};
   if (mode_ == Mode::Tracking) published.insert(published.end(), {error_pub_.getTopic(), target_pub_.getTopic()});
   return published;
