@@ -19,6 +19,7 @@ import tempfile
 import unittest
 
 import rosbag
+import rospkg
 
 PKG = 'spherical_robots'
 
@@ -41,20 +42,30 @@ def free_port():
         return s.getsockname()[1]
 
 
+def launch_file(stack):
+    """The stack's launch file by its full path, as $(find) resolves it. `roslaunch PKG FILE`
+    searches the whole package directory, and when the package's path is its source tree with the
+    colcon workspace inside it (under colcon test) it finds the installed copy too and refuses:
+    "multiple files named [terrain_stack.launch]"."""
+    return os.path.join(rospkg.RosPack().get_path(PKG), 'launch', '%s_stack.launch' % stack)
+
+
 def run_stack(stack, duration, extra_args, bag, busy_loops):
     port = free_port()
     env = dict(os.environ, ROS_MASTER_URI='http://localhost:%d' % port)
     env['ROS_HOME'] = os.path.dirname(bag)
     busy = [subprocess.Popen(['yes'], stdout=subprocess.DEVNULL) for _ in range(busy_loops)]
     try:
-        command = ['roslaunch', '-p', str(port), PKG, '%s_stack.launch' % stack,
+        command = ['roslaunch', '-p', str(port), launch_file(stack),
                    'duration:=%g' % duration, 'record:=%s' % bag] + extra_args
-        log = open(bag + '.log', 'w')
-        child = subprocess.run(command, env=env, stdout=log, stderr=subprocess.STDOUT,
-                               timeout=60 + 20 * duration)
+        with open(bag + '.log', 'w') as log:
+            child = subprocess.run(command, env=env, stdout=log, stderr=subprocess.STDOUT,
+                                   timeout=60 + 20 * duration)
         if child.returncode != 0:
-            raise AssertionError('%s failed with %d (log %s)' % (' '.join(command), child.returncode,
-                                                                 bag + '.log'))
+            with open(bag + '.log') as log:
+                tail = log.readlines()[-20:]
+            raise AssertionError('%s failed with %d; the end of its log %s:\n%s'
+                                 % (' '.join(command), child.returncode, bag + '.log', ''.join(tail)))
     finally:
         for b in busy:
             b.kill()
