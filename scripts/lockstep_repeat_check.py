@@ -1,12 +1,15 @@
 #!/usr/bin/env python3
 """Runs one stack twice in lock-step, one run after the other, each on its own ROS master and
 recorded to a bag, and asserts that the two runs published the same messages, value for value
-(docs/lockstep.md, "Repeatable"). The second run can have busy loops hogging the CPU beside it.
-The bags must also hold every message the loop publishes: as many as the step count says.
+(docs/lockstep.md, "Repeatable"). The second run can have busy loops hogging the CPU beside it,
+and launch arguments of its own: with nodelet:=true it checks that the stack as nodelets
+publishes what it publishes as processes. The bags must also hold every message the loop
+publishes: as many as the step count says.
 
-As a rostest node (test/lockstep_repeat_terrain.test) the parameters are private (~stack,
-~duration, ~busy_loops, ~args); from a shell:
-    lockstep_repeat_check.py --stack terrain --duration 20 --busy-loops 2 [-- launch args]
+As a rostest node (test/lockstep_nodelet_terrain.test) the parameters are private (~stack,
+~duration, ~busy_loops, ~args, ~second_args); from a shell:
+    lockstep_repeat_check.py --stack terrain --duration 20 --busy-loops 2 \
+        [--second-args nodelet:=true] [-- launch args]
 """
 import argparse
 import io
@@ -103,12 +106,12 @@ def transforms(bag_path, prefix):
     return out
 
 
-def compare(stack, duration, extra_args, busy_loops, workdir):
+def compare(stack, duration, extra_args, busy_loops, workdir, second_args=()):
     ns, topics, (count_topic, rate), lossless = STACKS[stack]
     names = ['/%s/%s' % (ns, t) for t in topics]
     bags = [os.path.join(workdir, 'run%d.bag' % i) for i in (1, 2)]
     run_stack(stack, duration, extra_args, bags[0], 0)
-    run_stack(stack, duration, extra_args, bags[1], busy_loops)
+    run_stack(stack, duration, extra_args + list(second_args), bags[1], busy_loops)
     first, second = (messages(b, names) for b in bags)
     report = []
     for name in names:
@@ -143,8 +146,9 @@ class LockstepRepeatability(unittest.TestCase):
         duration = float(rospy.get_param('~duration', 20.0))
         busy_loops = int(rospy.get_param('~busy_loops', 2))
         extra_args = str(rospy.get_param('~args', '')).split()
+        second_args = str(rospy.get_param('~second_args', '')).split()
         workdir = tempfile.mkdtemp(prefix='lockstep_repeat.')
-        print(compare(stack, duration, extra_args, busy_loops, workdir))
+        print(compare(stack, duration, extra_args, busy_loops, workdir, second_args))
         shutil.rmtree(workdir, ignore_errors=True)
 
 
@@ -157,11 +161,14 @@ def main():
     parser.add_argument('--stack', choices=sorted(STACKS), default='terrain')
     parser.add_argument('--duration', type=float, default=20.0)
     parser.add_argument('--busy-loops', type=int, default=2)
+    parser.add_argument('--second-args', nargs='+', default=[], metavar='ARG',
+                        help='launch arguments of the second run only, e.g. nodelet:=true')
     parser.add_argument('args', nargs='*', help='launch arguments, e.g. robot:=RS path:=diamond')
     options = parser.parse_args()
     workdir = tempfile.mkdtemp(prefix='lockstep_repeat.')
     try:
-        print(compare(options.stack, options.duration, options.args, options.busy_loops, workdir))
+        print(compare(options.stack, options.duration, options.args, options.busy_loops, workdir,
+                      options.second_args))
         print('repeatable: the two runs published the same messages')
     except AssertionError as e:
         sys.exit('NOT repeatable: %s (bags in %s)' % (e, workdir))
