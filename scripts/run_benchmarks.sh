@@ -3,9 +3,11 @@
 #  1. bench_terrain (Google Benchmark): the sphere_sim command in-process, and the run without CSV;
 #     bench_freebot: FreeBOT IK over 10,000 random reachable targets of a 3-joint chain;
 #     bench_rotor: the two-rotor sphere's n-step planner (k 0..5 x n 1..5; target < 50 ms each);
-#  2. the CPU time (user + sys) of whole `sphere_sim terrain` processes, one 200 s circle run per
-#     robot type and tracking law, run from the install space without --config, against a 10 ms
-#     target (issue 13: with --law smooth).
+#  2. the CPU time (user + sys) of whole `sphere_sim` processes run from the install space without
+#     --config, each against its target (issue 13): one 200 s terrain circle run per robot type
+#     and tracking law (10 ms, with --law smooth), its fixed costs alone (start-up: --help;
+#     start-up and configuration: --duration 0), the rotor planner's slowest problems (50 ms) and
+#     the Norma paper run (40 ms).
 # usage: scripts/run_benchmarks.sh [REPEATS]    (processes per robot type, default 20)
 # SR_BIN_DIR=DIR uses sphere_sim, bench_terrain and bench_rotor from DIR instead of building the
 # workspace.
@@ -33,12 +35,22 @@ python3 - "$bin/sphere_sim" "$repeats" <<'EOF'
 import os, statistics, subprocess, sys, tempfile
 
 sim, repeats = sys.argv[1], int(sys.argv[2])
-target_ms = 10.0
-out = os.path.join(tempfile.mkdtemp(prefix='sphere_sim_bench.'), 'run.csv')
-print('%-40s %12s %10s %10s %7s' % ('case', 'CPU ms/proc', 'min ms', 'target ms', 'ratio'))
-for robot, law in [(r, l) for l in ('smooth', 'paper') for r in ('3R', '2R', 'RT', 'RS')]:
-    args = [sim, 'terrain', '--robot', robot, '--path', 'circle', '--law', law, '--duration', '200',
-            '--out', out]
+out = os.path.join(tempfile.mkdtemp(prefix='sphere_sim_bench.'), 'run.out')
+cases = [('terrain %s circle 200 s, %s' % (robot, law),
+          ['terrain', '--robot', robot, '--path', 'circle', '--law', law, '--duration', '200'],
+          10.0 if law == 'smooth' else None)
+         for law in ('smooth', 'paper') for robot in ('3R', '2R', 'RT', 'RS')]
+cases += [('start-up (sphere_sim --help)', ['--help'], None),
+          ('start-up + configuration (terrain, 0 s)',
+           ['terrain', '--robot', '3R', '--path', 'circle', '--law', 'smooth', '--duration', '0'],
+           None)]
+cases += [('rotor-plan k %g, n %d' % (k, n),
+           ['rotor-plan', '--k', str(k), '--steps', str(n), '--target', '0.4,0.7,0.6'], 50.0)
+          for k, n in ((3.75, 5), (5, 3), (5, 4), (5, 5))]
+cases += [('norma paper run, 1300 s', ['norma'], 40.0)]
+print('%-42s %12s %10s %10s %7s' % ('case', 'CPU ms/proc', 'min ms', 'target ms', 'ratio'))
+for label, case_args, target_ms in cases:
+    args = [sim] + case_args + ([] if case_args == ['--help'] else ['--out', out])
     cpu_ms = []
     for _ in range(repeats):
         child = subprocess.Popen(args, stdout=subprocess.DEVNULL)
@@ -47,8 +59,8 @@ for robot, law in [(r, l) for l in ('smooth', 'paper') for r in ('3R', '2R', 'RT
             sys.exit('%s failed with status %d' % (' '.join(args), os.waitstatus_to_exitcode(status)))
         cpu_ms.append(1000.0 * (usage.ru_utime + usage.ru_stime))
     median = statistics.median(cpu_ms)
-    print('%-40s %12.1f %10.1f %10.0f %7.2f' % ('terrain %s circle 200 s, %s (median)' % (robot, law),
-                                                median, min(cpu_ms), target_ms, median / target_ms))
+    target = ('%10.0f %7.2f' % (target_ms, median / target_ms)) if target_ms else '%10s %7s' % ('', '')
+    print('%-42s %12.1f %10.1f %s' % (label, median, min(cpu_ms), target))
 os.remove(out)
 os.rmdir(os.path.dirname(out))
 EOF

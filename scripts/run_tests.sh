@@ -37,6 +37,14 @@ read -r ran errors failures skipped <<< "${counts:-0 0 0 0}"
 if [ "$ran" -eq 0 ]; then
   sr_log "FAILED: no tests ran"; exit 1
 fi
+# rostest counts a test node that died before reporting (an exception at shutdown) as a success
+# with no test case: its rosunit result then holds none.
+silent=$(grep -L "<testcase" build/spherical_robots/test_results/spherical_robots/rosunit-*.xml \
+         2>/dev/null || true)
+if [ -n "$silent" ]; then
+  sr_log "FAILED: test nodes that reported no test case: $(echo $silent | xargs -n1 basename | tr '\n' ' ')"
+  exit 1
+fi
 if [ "$errors" -ne 0 ] || [ "$failures" -ne 0 ] || [ "$test_rc" -ne 0 ]; then
   sr_log "FAILED: $failures failures, $errors errors (colcon test exit $test_rc)"; exit 1
 fi

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "spherical_robots/core/sin_cos.hpp"
 #include "spherical_robots/core/validation.hpp"
 
 namespace spherical_robots::norma {
@@ -40,7 +41,7 @@ KinematicCommand paperKinematics(const KinematicGains& gains, double R, double x
   KinematicCommand out;
   out.error = std::sqrt(ex * ex + ey * ey);
   // Eq 49 from e to the heading h: ‖e‖ sin ζ = e × h, ‖e‖ cos ζ = e · h.
-  const double c = std::cos(psi), s = std::sin(psi);
+  const auto [s, c] = sinCos(psi);
   const double e_sin = ex * s - ey * c;
   const double e_cos = ex * c + ey * s;
   out.zeta = std::atan2(e_sin, e_cos);
@@ -103,7 +104,7 @@ KinematicCommand NormaController::trackingLayer(const Vector4& q, const Vector4&
   const double speed = std::sqrt(speed_sq);
   const double path_yaw_rate =
       speed_sq > 0.0 ? (r.x_dot * r.y_ddot - r.y_dot * r.x_ddot) / speed_sq : 0.0;
-  const double c = std::cos(psi), s = std::sin(psi);
+  const auto [s, c] = sinCos(psi);
   // The path's direction in the robot's heading frame: speed (cos, sin) of the heading error.
   const double path_along = c * r.x_dot + s * r.y_dot;
   const double path_across = -s * r.x_dot + c * r.y_dot;

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "spherical_robots/core/sin_cos.hpp"
 #include "spherical_robots/core/validation.hpp"
 
 namespace spherical_robots::norma {
@@ -46,8 +47,8 @@ NormaDynamics::NormaDynamics(const NormaParameters& parameters, LagrangianVarian
 void NormaDynamics::evaluate(const Vector4& q, Matrix4& m, Matrix4 dm[4], Vector4& gv) const {
   const NormaParameters& p = parameters_;
   const double beta = q(1) - q(0);
-  const double sb = std::sin(beta), cb = std::cos(beta);
-  const double sf = std::sin(q(2)), cf = std::cos(q(2));
+  const auto [sb, cb] = sinCos(beta);
+  const auto [sf, cf] = sinCos(q(2));
   std::array<Matrix4, 3> d_beta_phi_delta;
   evaluateTextTerms(p, sb, cb, sf, cf, p.delta0 + q(3), m, d_beta_phi_delta, gv);
   if (variant_ == LagrangianVariant::kAppendix) {
@@ -143,8 +144,8 @@ PlanarRates NormaDynamics::planarRates(const Vector4& q, const Vector4& qd, doub
   requireFiniteVector(qd, true);
   requireFinite(psi, "psi");
   const double r = parameters_.R;
-  const double cf = std::cos(q(2)), sf = std::sin(q(2));
-  const double cp = std::cos(psi), sp = std::sin(psi);
+  const auto [sf, cf] = sinCos(q(2));
+  const auto [sp, cp] = sinCos(psi);
   PlanarRates out;
   out.x_dot = r * qd(0) * cf * cp + r * qd(2) * sp;  // eq 12
   out.y_dot = r * qd(0) * cf * sp - r * qd(2) * cp;  // eq 12

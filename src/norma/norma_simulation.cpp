@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "spherical_robots/core/sin_cos.hpp"
 #include "spherical_robots/core/validation.hpp"
 
 namespace spherical_robots::norma {
@@ -45,7 +46,7 @@ NormaSample plantSample(const NormaDynamics& dynamics, const OdeState& x, double
 
 PathPoint lissajousPath(double t) {
   requireFinite(t, "t [s]");
-  const double s1 = std::sin(0.01 * t), c1 = std::cos(0.01 * t);
+  const auto [s1, c1] = sinCos(0.01 * t);
   const double s2 = 2.0 * s1 * c1, c2 = c1 * c1 - s1 * s1;  // of 0.02 t
   PathPoint p;
   p.x = 2.0 * s1;

@@ -245,7 +245,7 @@ spherical_robots::TerrainState toTerrainStateMsg(terrain::RobotType type, terrai
                                                  const ros::Time& stamp) {
   spherical_robots::TerrainState msg;
   msg.header.stamp = stamp;
-  msg.header.frame_id = "world";
+  msg.header.frame_id = kWorldFrame;
   msg.robot_type = terrain::toString(type);
   msg.contact_model = terrain::toString(model);
   msg.contact_point = toPoint(geometry.contact_point);

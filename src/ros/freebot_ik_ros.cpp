@@ -20,7 +20,6 @@ namespace {
 constexpr double kNotMeasured = -1.0;
 
 
-const std::string kWorldFrame = "world";
 // Goals come from rviz (float32 quaternions) and from people typing 4-digit quaternions.
 constexpr double kGoalUnitTolerance = 1e-3;
 
@@ -53,6 +52,7 @@ FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       last_drive_(chain_.moduleCount()),
       state_input_(nh.resolveName("freebot_state"), positiveParam(pnh, "input_timeout", 0.1)),
       goal_input_(nh.resolveName("goal"), 1e9),
+      work_([this](const spherical_robots::FreebotState& msg) { drive(msg); }, step_publications_),
       updater_(nh, pnh, pnh.getNamespace()) {
   ik_options_.position_tolerance =
       positiveParam(pnh, "ik/position_tolerance", ik_options_.position_tolerance);
@@ -67,10 +67,11 @@ FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   limits_.contact_tolerance = positiveParam(pnh, "contact_tolerance", limits_.contact_tolerance);
   limits_.steering_distance = positiveParam(pnh, "steering_distance", limits_.steering_distance);
 
-  command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", 10);
+  command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
   result_pub_ = nh.advertise<spherical_robots::FreebotGoalResult>("goal_result", 10, true);
   target_pub_ = nh.advertise<geometry_msgs::PoseStamped>("ik_target", 1, true);
   state_sub_ = nh.subscribe("freebot_state", 10, &FreebotIkRos::onState, this);
+  work_.join(nh, pnh, {state_sub_});
   goal_sub_ = nh.subscribe("goal", 10, &FreebotIkRos::onGoal, this);
   solve_server_ = nh.advertiseService("solve_ik", &FreebotIkRos::onSolve, this);
   updater_.setHardwareID("FreeBOT");
@@ -82,10 +83,14 @@ FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 }
 
 void FreebotIkRos::onState(const spherical_robots::FreebotState& msg) {
+  work_.arrived(msg, state_sub_.getTopic());
+}
+
+void FreebotIkRos::drive(const spherical_robots::FreebotState& msg) {
   const ros::Time now = msg.header.stamp;
   try {
     // Goal timeouts count from these stamps: one far from the clock must not abort a goal.
-    const std::string stamp_problem = stampProblem(now, ros::Time::now(), max_stamp_skew_);
+    const std::string stamp_problem = stampProblem(now, workingTime(work_.participant()), max_stamp_skew_);
     if (!stamp_problem.empty()) throw std::invalid_argument("freebot_state " + stamp_problem);
     freebot::ChainState state = conversions::chainStateFromMsg(msg);
     chain_.requireValid(state);
@@ -94,7 +99,7 @@ void FreebotIkRos::onState(const spherical_robots::FreebotState& msg) {
     state_input_.reject(e.what());  // nothing commanded: the hardware's watchdog stops the wheels
     return;
   }
-  state_input_.accept(ros::Time::now());
+  state_input_.accept(workingTime(work_.participant()));
 
   std::vector<freebot::WheelSpeeds> wheels(chain_.moduleCount());
   if (goal_) {
@@ -139,7 +144,7 @@ std::pair<double, double> FreebotIkRos::errorsTo(const Goal& goal) const {
 }
 
 void FreebotIkRos::onGoal(const geometry_msgs::PoseStamped& msg) {
-  const ros::Time now = ros::Time::now();
+  const ros::Time now = workingTime(work_.participant());
   Goal goal;
   goal.pose = msg.pose;
   goal.received = now;
@@ -279,7 +284,7 @@ bool FreebotIkRos::onSolve(spherical_robots::SolveFreebotIk::Request& request,
 }
 
 void FreebotIkRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
-  const ros::Time now = ros::Time::now();
+  const ros::Time now = workingTime(work_.participant());
   if (goal_) {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "moving to the goal");
   } else if (have_result_ && (last_result_.status == spherical_robots::FreebotGoalResult::UNREACHABLE ||

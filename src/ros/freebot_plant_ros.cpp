@@ -1,8 +1,5 @@
 #include "spherical_robots/ros/freebot_plant_ros.hpp"
 
-#include "spherical_robots/ros/diagnostics_timer.hpp"
-#include "spherical_robots/ros/loop_publishers.hpp"
-
 #include <visualization_msgs/MarkerArray.h>
 
 #include <Eigen/Geometry>
@@ -17,9 +14,19 @@
 namespace spherical_robots {
 namespace {
 
-const std::string kWorldFrame = "world";
 constexpr double kTrolleyArrow = 0.02;  // [m] length of a trolley's heading arrow
-constexpr std::size_t kMaxTrailPoints = 5000;
+
+PlantLoop::Defaults loopDefaults() {
+  PlantLoop::Defaults defaults;
+  defaults.task = "freebot plant";
+  defaults.hardware_id = "FreeBOT";
+  defaults.step = 0.01;
+  defaults.pace = 1.0;
+  defaults.state_timeout = 0.1;
+  defaults.trail_period = 0.1;
+  defaults.max_trail_points = 5000;
+  return defaults;
+}
 
 visualization_msgs::Marker marker(const std::string& frame, const ros::Time& stamp,
                                   const std::string& ns, int id, int type) {
@@ -61,75 +68,49 @@ std::string freebotLinkFrame(const std::string& prefix, std::size_t i) {
 FreebotPlantRos::FreebotPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : chain_(freebotChainFromParams(nh)),
       prefix_(stringParam(pnh, "frame_prefix", "")),
-      step_(positiveParam(pnh, "step", 0.01)),
-      timeline_(pnh),
       max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
-      publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
-      trail_(nh, "trail", kWorldFrame, positiveParam(pnh, "trail_period", 0.1), kMaxTrailPoints),
       state_(chain_.alignedState()),
       wheels_(chain_.moduleCount()),
-      actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.1)),
-      updater_(nh, pnh) {
-  actuator_sub_ = nh.subscribe("actuators/state", 10, &FreebotPlantRos::onActuatorState, this);
-  state_pub_ = nh.advertise<spherical_robots::FreebotState>("freebot_state", kLoopQueueSize);
-  marker_pub_ = nh.advertise<visualization_msgs::MarkerArray>("freebot_markers", kLoopQueueSize);
-  updater_.setHardwareID("FreeBOT");
-  updater_.add("freebot plant", this, &FreebotPlantRos::diagnose);
-  diagnostics_timer_ = startDiagnostics(nh, updater_);
-
+      loop_(nh, pnh, loopDefaults()) {
+  state_pub_ = loop_.advertise<spherical_robots::FreebotState>("freebot_state");
+  marker_pub_ = loop_.advertise<visualization_msgs::MarkerArray>("freebot_markers");
   std::ostringstream radii;
   for (double r : chain_.manipulator().radii()) radii << (radii.tellp() > 0 ? ", " : "") << r;
   ROS_INFO_STREAM("FreeBOT chain: " << chain_.moduleCount() << " modules, radii [" << radii.str()
                                     << "] m, reach " << chain_.manipulator().reach()
-                                    << " m; step " << step_ << " s");
-  clock_ = makePlantClock(nh, pnh, step_, 1.0, [this](const ros::Time& now) { return tick(now); },
-                          state_pub_, actuator_sub_);
+                                    << " m; step " << loop_.step() << " s");
+  loop_.start(*this, state_pub_);
 }
 
-void FreebotPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
-  try {
-    wheels_ = conversions::wheelSpeedsFromJointState(msg, chain_.moduleCount(), max_actuator_rate_);
-    actuator_input_.accept(clock_ ? clock_->now() : ros::Time::now());
-  } catch (const std::invalid_argument& e) {
-    actuator_input_.reject(e.what());
+void FreebotPlantRos::read(const sensor_msgs::JointState& actuators) {
+  wheels_ = conversions::wheelSpeedsFromJointState(actuators, chain_.moduleCount(), max_actuator_rate_);
+}
+
+void FreebotPlantRos::advance(double elapsed, bool actuators_fresh) {
+  freebot::ChainState next = chain_.advance(
+      state_, actuators_fresh ? wheels_ : std::vector<freebot::WheelSpeeds>(chain_.moduleCount()),
+      elapsed);
+  // Nothing non-finite is published: a step that would produce it is a failed step.
+  for (std::size_t i = 0; i < next.joints.size(); ++i) {
+    if (!next.joints[i].link.coeffs().allFinite() || !next.joints[i].base.coeffs().allFinite() ||
+        !std::isfinite(next.headings[i]))
+      throw std::runtime_error("the step produced a non-finite state of joint " +
+                               std::to_string(i + 1));
   }
-  if (clock_) clock_->received(actuator_sub_.getTopic(), msg.header.stamp);
+  state_ = std::move(next);
 }
 
-std::vector<std::string> FreebotPlantRos::tick(const ros::Time& now) {
-  if (timeline_.finished()) return {};
-  const std::vector<freebot::WheelSpeeds> wheels =
-      actuator_input_.fresh(now) ? wheels_
-                                 : std::vector<freebot::WheelSpeeds>(chain_.moduleCount());
-  timeline_.tick(now, [&](double elapsed) {
-    freebot::ChainState next = chain_.advance(state_, wheels, elapsed);
-    // Nothing non-finite is published: a step that would produce it is a failed step.
-    for (std::size_t i = 0; i < next.joints.size(); ++i) {
-      if (!next.joints[i].link.coeffs().allFinite() || !next.joints[i].base.coeffs().allFinite() ||
-          !std::isfinite(next.headings[i]))
-        throw std::runtime_error("the step produced a non-finite state of joint " +
-                                 std::to_string(i + 1));
-    }
-    state_ = std::move(next);
-  });
+void FreebotPlantRos::publishEveryStep(const ros::Time& now, bool /*actuators_fresh*/) {
   const freebot::LinkPose end = chain_.manipulator().endEffector(state_.joints);
   state_pub_.publish(conversions::toFreebotStateMsg(state_, end, kWorldFrame, now));
-  if (trail_.due(now)) trail_.add(now, end.position, end.orientation);
-  std::vector<std::string> published = {state_pub_.getTopic()};
-  if (periodDue(last_publish_, now, publish_period_)) {
-    publishFrames(now);
-    published.insert(published.end(), {marker_pub_.getTopic(), "/tf"});
-  }
-
-  if (timeline_.complete(now)) {
-    ROS_INFO_STREAM("scenario complete after " << timeline_.duration() << " s");
-    clock_->finish();
-  }
-  return published;
 }
 
-void FreebotPlantRos::publishFrames(const ros::Time& now) {
-  last_publish_ = now;
+std::optional<PlantModel::Pose> FreebotPlantRos::trailPose() const {
+  const freebot::LinkPose end = chain_.manipulator().endEffector(state_.joints);
+  return Pose{end.position, end.orientation};
+}
+
+void FreebotPlantRos::publishPeriodic(const ros::Time& now, bool /*actuators_fresh*/) {
   const auto& radii = chain_.manipulator().radii();
   std::vector<geometry_msgs::TransformStamped> transforms;
   transforms.push_back(conversions::toTransform(Eigen::Vector3d::Zero(),
@@ -166,18 +147,24 @@ void FreebotPlantRos::publishFrames(const ros::Time& now) {
     trolley.color.a = 1.0f;
     markers.markers.push_back(trolley);
   }
-  tf_broadcaster_.sendTransform(transforms);
+  loop_.tf().sendTransform(transforms);
   marker_pub_.publish(markers);
 }
 
 void FreebotPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
-  const ros::Time now = ros::Time::now();
   status.summary(diagnostic_msgs::DiagnosticStatus::OK, "integrating measured wheel speeds");
   status.add("modules", chain_.moduleCount());
   const freebot::LinkPose end = chain_.manipulator().endEffector(state_.joints);
   status.addf("end-effector [m]", "%.6f, %.6f, %.6f", end.position.x(), end.position.y(),
               end.position.z());
-  reportPlantHealth(status, now, *clock_, timeline_, actuator_input_);
+}
+
+std::string FreebotPlantRos::describeState() const {
+  const freebot::LinkPose end = chain_.manipulator().endEffector(state_.joints);
+  std::ostringstream text;
+  text << "end-effector at (" << end.position.x() << ", " << end.position.y() << ", "
+       << end.position.z() << ") m";
+  return text.str();
 }
 
 }  // namespace spherical_robots

@@ -13,7 +13,6 @@
 #include "spherical_robots/config/roller_config.hpp"
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
-#include "spherical_robots/ros/shared_message.hpp"
 #include "spherical_robots/ros/plant_clock.hpp"
 
 namespace spherical_robots {
@@ -58,25 +57,30 @@ FrictionDriveControllerRos::FrictionDriveControllerRos(ros::NodeHandle nh, ros::
       last_motor_rates_(2, 0.0),
       max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
       input_(nh.resolveName("drive/command"), positiveParam(pnh, "input_timeout", 0.5)),
+      work_([this](const sensor_msgs::JointState& msg) { convert(msg); }, step_publications_),
       updater_(nh, pnh, pnh.getNamespace()) {
-  command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", 10);
+  command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
   command_sub_ = nh.subscribe("drive/command", 10, &FrictionDriveControllerRos::onDriveCommand, this);
+  work_.join(nh, pnh, {command_sub_});
   updater_.setHardwareID("friction drive");
   updater_.add("friction drive inverse", this, &FrictionDriveControllerRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
   ROS_INFO_STREAM("Friction drive inverse: " << input_.topic() << " (2R rates) -> "
-                                             << command_pub_.getTopic() << " (roller motors)");
+                                             << command_pub_.topic() << " (roller motors)");
 }
 
 void FrictionDriveControllerRos::onDriveCommand(const sensor_msgs::JointState& msg) {
+  work_.arrived(msg, command_sub_.getTopic());
+}
+
+void FrictionDriveControllerRos::convert(const sensor_msgs::JointState& msg) {
   try {
     const std::array<double, 2> motor_rates =
         actuation_.motorRates(conversions::ratesFromJointState(terrain::RobotType::TwoAxisRolling,
                                                                msg, max_actuator_rate_));
     last_motor_rates_.assign(motor_rates.begin(), motor_rates.end());
-    input_.accept(ros::Time::now());
-    command_pub_.publish(
-        shared(conversions::velocityJointState(kMotorNames, last_motor_rates_, msg.header.stamp)));
+    input_.accept(workingTime(work_.participant()));
+    command_pub_.publish(conversions::velocityJointState(kMotorNames, last_motor_rates_, msg.header.stamp));
   } catch (const std::invalid_argument& e) {
     input_.reject(e.what());  // nothing published: the hardware keeps the last good set-points
   }
@@ -87,7 +91,7 @@ void FrictionDriveControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWr
   describeDrive(actuation_, status);
   status.addf("roller_1, roller_2 set-points [rad/s]", "%.6g, %.6g", last_motor_rates_[0],
               last_motor_rates_[1]);
-  input_.report(status, ros::Time::now());
+  input_.report(status, workingTime(work_.participant()));
 }
 
 FrictionDriveSimRos::FrictionDriveSimRos(ros::NodeHandle nh, ros::NodeHandle pnh)
@@ -96,19 +100,25 @@ FrictionDriveSimRos::FrictionDriveSimRos(ros::NodeHandle nh, ros::NodeHandle pnh
       marker_period_(1.0 / positiveParam(pnh, "marker_rate", 20.0)),
       max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
       input_(nh.resolveName("actuators/state"), positiveParam(pnh, "input_timeout", 0.5)),
+      work_([this](const sensor_msgs::JointState& msg) { drive(msg); }, step_publications_),
       updater_(nh, pnh, pnh.getNamespace()) {
-  drive_state_pub_ = nh.advertise<sensor_msgs::JointState>("drive/state", 10);
-  drive_pub_ = nh.advertise<spherical_robots::RollerDrive>("roller_drive", 10);
-  marker_pub_ = nh.advertise<visualization_msgs::MarkerArray>("roller_markers", 10);
+  drive_state_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "drive/state");
+  drive_pub_ = step_publications_.advertise<spherical_robots::RollerDrive>(nh, "roller_drive");
+  marker_pub_ = step_publications_.advertise<visualization_msgs::MarkerArray>(nh, "roller_markers");
   state_sub_ = nh.subscribe("actuators/state", 10, &FrictionDriveSimRos::onActuatorState, this);
+  work_.join(nh, pnh, {state_sub_});
   updater_.setHardwareID("friction drive");
   updater_.add("friction drive forward", this, &FrictionDriveSimRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
   ROS_INFO_STREAM("Friction drive forward: " << input_.topic() << " (roller motors) -> "
-                                             << drive_state_pub_.getTopic() << " (2R rates)");
+                                             << drive_state_pub_.topic() << " (2R rates)");
 }
 
 void FrictionDriveSimRos::onActuatorState(const sensor_msgs::JointState& msg) {
+  work_.arrived(msg, state_sub_.getTopic());
+}
+
+void FrictionDriveSimRos::drive(const sensor_msgs::JointState& msg) {
   roller::DriveState state;
   try {
     const std::vector<double> rates =
@@ -119,9 +129,9 @@ void FrictionDriveSimRos::onActuatorState(const sensor_msgs::JointState& msg) {
     return;
   }
   last_state_ = state;
-  input_.accept(ros::Time::now());
-  drive_state_pub_.publish(shared(conversions::jointStateFromRates(
-      terrain::RobotType::TwoAxisRolling, roller::rollingRates(state.omega), msg.header.stamp)));
+  input_.accept(workingTime(work_.participant()));
+  drive_state_pub_.publish(conversions::jointStateFromRates(
+      terrain::RobotType::TwoAxisRolling, roller::rollingRates(state.omega), msg.header.stamp));
 
   spherical_robots::RollerDrive drive;
   drive.header.stamp = msg.header.stamp;
@@ -133,9 +143,9 @@ void FrictionDriveSimRos::onActuatorState(const sensor_msgs::JointState& msg) {
   drive.rho = state.motion.rho;
   drive_pub_.publish(drive);
 
-  const ros::Time now = ros::Time::now();
-  if (periodDue(last_markers_, now, marker_period_)) {
-    last_markers_ = now;
+  // On the message's time, not the clock's, so that lock-step runs publish the same markers.
+  if (periodDue(last_markers_, msg.header.stamp, marker_period_)) {
+    last_markers_ = msg.header.stamp;
     publishMarkers(state, msg.header.stamp);
   }
 }
@@ -179,7 +189,7 @@ void FrictionDriveSimRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& 
   describeDrive(actuation_, status);
   status.addf("v1, v2 [m/s]", "%.6g, %.6g", last_state_.speeds.v1, last_state_.speeds.v2);
   status.addf("S1, S2 [m/s]", "%.6g, %.6g", last_state_.slip[0], last_state_.slip[1]);
-  input_.report(status, ros::Time::now());
+  input_.report(status, workingTime(work_.participant()));
 }
 
 }  // namespace spherical_robots

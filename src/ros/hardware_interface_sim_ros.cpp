@@ -278,9 +278,7 @@ void HardwareInterfaceSimRos::timerCallback(const ros::TimerEvent& event) {
   update(ros::Time::now());
 }
 
-ros::Time HardwareInterfaceSimRos::now() const {
-  return lockstep_ ? lockstep_->now() : ros::Time::now();
-}
+ros::Time HardwareInterfaceSimRos::now() const { return workingTime(lockstep_.get()); }
 
 void HardwareInterfaceSimRos::update(const ros::Time& now) {
   followClock(now);

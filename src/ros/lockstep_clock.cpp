@@ -67,19 +67,25 @@ LockstepClock::LockstepClock(ros::NodeHandle nh, Settings settings, Tick tick, R
                                 "so no node would follow it");
   if (!queue_) queue_ = ros::getGlobalCallbackQueue();
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
-  clock_pub_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 100);
   request_pub_ = nh.advertise<spherical_robots::LockstepStep>("lockstep/step", 100);
   ack_sub_ = nh.subscribe("lockstep/ack", 100, &LockstepClock::onAck, this, hints);
-  pause_srv_ = nh.advertiseService("lockstep/pause", &LockstepClock::pause, this);
-  resume_srv_ = nh.advertiseService("lockstep/resume", &LockstepClock::resume, this);
-  step_srv_ = nh.advertiseService("lockstep/step_once", &LockstepClock::stepOnce, this);
+  if (settings_.leader.empty()) {
+    clock_pub_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 100);
+    pause_srv_ = nh.advertiseService("lockstep/pause", &LockstepClock::pause, this);
+    resume_srv_ = nh.advertiseService("lockstep/resume", &LockstepClock::resume, this);
+    step_srv_ = nh.advertiseService("lockstep/step_once", &LockstepClock::stepOnce, this);
+  } else {
+    leader_nh_ = ros::NodeHandle(settings_.leader);
+  }
   poll_timer_ = nh.createWallTimer(ros::WallDuration(0.05), &LockstepClock::poll, this);
   pace_timer_ = nh.createWallTimer(
       ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) { runStep(); }, true, false);
-  ROS_INFO_STREAM("Lock-step /clock: " << settings_.step << " s per step, "
-                  << (settings_.speedup > 0.0 ? "at most " + std::to_string(settings_.speedup) +
-                                                    "x real time"
-                                              : std::string("as fast as the participants answer"))
+  ROS_INFO_STREAM("Lock-step " << (settings_.leader.empty() ? "/clock" : "time of " + settings_.leader)
+                  << ": " << settings_.step << " s per step, "
+                  << (!settings_.leader.empty() ? std::string("as its leader asks")
+                      : settings_.speedup > 0.0 ? "at most " + std::to_string(settings_.speedup) +
+                                                      "x real time"
+                                                : std::string("as fast as the participants answer"))
                   << "; participants " << joined(settings_.participants) << ", dropped after "
                   << settings_.timeout << " s of silence");
 }
@@ -121,7 +127,17 @@ void LockstepClock::poll(const ros::WallTimerEvent&) {
       ROS_WARN_STREAM("Starting lock-step time without every participant or subscriber after "
                       << settings_.start_timeout << " s");
     started_ = true;
-    schedule();
+    if (settings_.leader.empty()) {
+      schedule();
+    } else {
+      // Asked to join only now, so the leader never waits for a stack that cannot answer yet.
+      leader_link_ = std::make_unique<LockstepParticipant>(
+          leader_nh_, ros::NodeHandle(settings_.name), std::vector<ros::Subscriber>{},
+          [this](const ros::Time& t) -> std::optional<LockstepParticipant::Done> {
+            runStepAt(t);
+            return std::nullopt;
+          });
+    }
     return;
   }
   if (const auto dropped = sequencer_.dropSilent(wall)) {
@@ -136,8 +152,7 @@ void LockstepClock::poll(const ros::WallTimerEvent&) {
                      << " did not arrive within " << settings_.timeout << " s at " << now_
                      << " s; stepping on without them");
     awaiting_inputs_ = false;
-    sequencer_.endStep();
-    schedule();
+    endStep();
   }
 }
 
@@ -161,14 +176,20 @@ void LockstepClock::schedule() {
 void LockstepClock::runStep() {
   scheduled_ = false;
   pace_timer_.stop();
-  now_ += ros::Duration(settings_.step);
+  runStepAt(now_ + ros::Duration(settings_.step));
+}
+
+void LockstepClock::runStepAt(const ros::Time& t) {
+  now_ = t;
   if (first_step_.isZero()) {
     first_step_ = now_;
     first_step_wall_ = ros::WallTime::now();
   }
-  rosgraph_msgs::Clock clock;
-  clock.clock = now_;
-  clock_pub_.publish(clock);
+  if (settings_.leader.empty()) {
+    rosgraph_msgs::Clock clock;
+    clock.clock = now_;
+    clock_pub_.publish(clock);
+  }
   const std::vector<std::string> published = tick_(now_);
   sequencer_.beginStep(nanoseconds(now_), published, ros::WallTime::now().toSec());
   pump();
@@ -203,8 +224,15 @@ void LockstepClock::received(const std::string& topic, const ros::Time& stamp) {
 void LockstepClock::finishIfInputsIn() {
   if (!inputs_.satisfied()) return;
   awaiting_inputs_ = false;
+  endStep();
+}
+
+void LockstepClock::endStep() {
   sequencer_.endStep();
-  schedule();
+  if (leader_link_)
+    leader_link_->answer({{}, now_ + ros::Duration(settings_.step)});
+  else
+    schedule();
 }
 
 bool LockstepClock::pause(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {

@@ -39,6 +39,10 @@ std::vector<std::string> lockstepParticipants(const ros::NodeHandle& nh) {
   return names;
 }
 
+ros::Time workingTime(const LockstepParticipant* participant) {
+  return participant ? participant->now() : ros::Time::now();
+}
+
 bool isLockstepParticipant(const ros::NodeHandle& nh, const ros::NodeHandle& pnh) {
   const std::vector<std::string> names = lockstepParticipants(nh);
   return std::find(names.begin(), names.end(), pnh.getNamespace()) != names.end();
@@ -102,7 +106,10 @@ void LockstepParticipant::workIfReady() {
   if (!inputs_.satisfied()) return;
   now_ = *pending_;
   pending_.reset();
-  const Done done = work_(now_);
+  if (const std::optional<Done> done = work_(now_)) answer(*done);
+}
+
+void LockstepParticipant::answer(const Done& done) {
   ++steps_;
   spherical_robots::LockstepAck ack;
   ack.stamp = now_;

@@ -1,7 +1,6 @@
 #include "spherical_robots/ros/norma_controller_ros.hpp"
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
-#include "spherical_robots/ros/loop_publishers.hpp"
 
 #include <geometry_msgs/PointStamped.h>
 #include <nav_msgs/Path.h>
@@ -10,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <utility>
 
 #include "spherical_robots/TrackingError.h"
 #include "spherical_robots/config/norma_description.hpp"
@@ -18,13 +16,11 @@
 #include "spherical_robots/norma/norma_simulation.hpp"
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
-#include "spherical_robots/ros/shared_message.hpp"
 #include "spherical_robots/ros/plant_clock.hpp"
 
 namespace spherical_robots {
 namespace {
 
-const std::string kWorldFrame = "world";
 constexpr double kPathPeriod = 200.0 * M_PI;  // [s] eq 52 repeats after 2π / 0.01
 constexpr int kDesiredPathSamples = 2000;
 constexpr double kLateAge = 0.002;           // [s] two 1 ms ticks: the delay the 1 kHz loop is built for
@@ -71,10 +67,11 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
       input_(nh.resolveName("norma_state"), positiveParam(pnh, "input_timeout", 0.05)),
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "input_timeout", 0.05)),
+      work_([this](const spherical_robots::NormaState& msg) { control(msg); }, step_publications_),
       updater_(nh, pnh, pnh.getNamespace()) {
-  command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", kLoopQueueSize);
-  error_pub_ = nh.advertise<spherical_robots::TrackingError>("tracking_error", kLoopQueueSize);
-  target_pub_ = nh.advertise<geometry_msgs::PointStamped>("target", kLoopQueueSize);
+  command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
+  error_pub_ = step_publications_.advertise<spherical_robots::TrackingError>(nh, "tracking_error");
+  target_pub_ = step_publications_.advertise<geometry_msgs::PointStamped>(nh, "target");
   desired_path_pub_ = nh.advertise<nav_msgs::Path>("desired_path", 1, true);
   desired_path_pub_.publish(desiredPath(ros::Time::now()));
   state_sub_ = nh.subscribe("norma_state", 10, &NormaControllerRos::onState, this);
@@ -82,14 +79,7 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.setHardwareID("Norma");
   updater_.add("norma controller", this, &NormaControllerRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
-  if (isLockstepParticipant(nh, pnh)) {
-    lockstep_ = std::make_unique<LockstepParticipant>(
-        nh, pnh, std::vector<ros::Subscriber>{state_sub_, actuator_sub_}, [this](const ros::Time& now) {
-          LockstepParticipant::Done done;
-          if (latest_state_ && latest_state_->header.stamp == now) done.published = control(*latest_state_);
-          return done;
-        });
-  }
+  work_.join(nh, pnh, {state_sub_, actuator_sub_});
   ROS_INFO_STREAM("Norma controller: "
                   << (controller().kind() == norma::ControllerKind::kPaper
                           ? "paper (eqs 48-51, Table 1)"
@@ -107,21 +97,16 @@ void NormaControllerRos::onActuatorState(const sensor_msgs::JointState& msg) {
   } catch (const std::invalid_argument& e) {
     actuator_input_.reject(e.what());
   }
-  if (lockstep_) lockstep_->received(actuator_sub_.getTopic(), msg.header.stamp);
+  if (work_.participant()) work_.participant()->received(actuator_sub_.getTopic(), msg.header.stamp);
 }
 
-ros::Time NormaControllerRos::now() const { return lockstep_ ? lockstep_->now() : ros::Time::now(); }
+ros::Time NormaControllerRos::now() const { return workingTime(work_.participant()); }
 
 void NormaControllerRos::onState(const spherical_robots::NormaState& msg) {
-  if (!lockstep_) {
-    control(msg);
-    return;
-  }
-  latest_state_ = msg;
-  lockstep_->received(state_sub_.getTopic(), msg.header.stamp);
+  work_.arrived(msg, state_sub_.getTopic());
 }
 
-std::vector<std::string> NormaControllerRos::control(const spherical_robots::NormaState& msg) {
+void NormaControllerRos::control(const spherical_robots::NormaState& msg) {
   const ros::Time now = msg.header.stamp;
   norma::ControlOutput output;
   try {
@@ -138,15 +123,14 @@ std::vector<std::string> NormaControllerRos::control(const spherical_robots::Nor
     output = loop_.step(now.toSec(), state);
   } catch (const std::invalid_argument& e) {
     input_.reject(e.what());  // nothing commanded: the hardware keeps the last good efforts
-    return {};
+    return;
   }
   input_.accept(this->now());
   sensor_msgs::JointState command;
   command.header.stamp = now;
   command.name = kActuators;
   command.effort = {output.torque, output.force};
-  command_pub_.publish(shared(std::move(command)));
-  std::vector<std::string> published = {command_pub_.getTopic()};
+  command_pub_.publish(command);
   const double age = (this->now() - now).toSec();
   max_state_age_ = std::max(max_state_age_, age);
   if (age > kLateAge) {
@@ -174,9 +158,7 @@ std::vector<std::string> NormaControllerRos::control(const spherical_robots::Nor
     target.header = error.header;
     target.point = error.desired;
     target_pub_.publish(target);
-    published.insert(published.end(), {error_pub_.getTopic(), target_pub_.getTopic()});
   }
-  return published;
 }
 
 void NormaControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

@@ -59,7 +59,13 @@ std::unique_ptr<PlantClock> makePlantClock(ros::NodeHandle nh, const ros::NodeHa
       LockstepClock::Settings settings;
       settings.step = step;
       settings.speedup = nonNegativeSpeedup(pnh, 0.0);
-      settings.timeout = positiveParam(pnh, "lockstep_timeout", 2.0);
+      settings.leader = stringParam(pnh, "lockstep_leader", "");
+      settings.name = pnh.getNamespace();
+      if (!settings.leader.empty() && settings.leader.front() != '/')
+        throw std::invalid_argument("parameter " + pnh.resolveName("lockstep_leader") + " = \"" +
+                                    settings.leader + "\" must be an absolute namespace (\"/sphere\")");
+      // A follower drops its own silent participant before the leader would drop the follower.
+      settings.timeout = positiveParam(pnh, "lockstep_timeout", settings.leader.empty() ? 2.0 : 1.0);
       settings.start_timeout = start_timeout;
       settings.participants = lockstepParticipants(nh);
       settings.subscriptions = {actuators.getTopic()};

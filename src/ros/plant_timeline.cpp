@@ -5,9 +5,7 @@
 
 #include <exception>
 
-#include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
-#include "spherical_robots/ros/plant_clock.hpp"
 
 namespace spherical_robots {
 
@@ -53,13 +51,6 @@ void PlantTimeline::report(diagnostic_updater::DiagnosticStatusWrapper& status,
   if (failures_ > failures_at_last_report_)
     status.mergeSummary(diagnostic_msgs::DiagnosticStatus::ERROR, "integration failed");
   failures_at_last_report_ = failures_;
-}
-
-void reportPlantHealth(diagnostic_updater::DiagnosticStatusWrapper& status, const ros::Time& now,
-                       PlantClock& clock, PlantTimeline& timeline, InputMonitor& actuators) {
-  clock.report(status);
-  timeline.report(status, now);
-  actuators.report(status, now);
 }
 
 }  // namespace spherical_robots

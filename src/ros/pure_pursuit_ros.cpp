@@ -1,7 +1,6 @@
 #include "spherical_robots/ros/pure_pursuit_ros.hpp"
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
-#include "spherical_robots/ros/loop_publishers.hpp"
 #include "spherical_robots/ros/timer_jump_guard.hpp"
 
 #include <geometry_msgs/PointStamped.h>
@@ -16,12 +15,10 @@
 #include "spherical_robots/config/terrain_config.hpp"
 #include "spherical_robots/core/validation.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
-#include "spherical_robots/ros/shared_message.hpp"
 
 namespace spherical_robots {
 namespace {
 
-const std::string kWorldFrame = "world";
 constexpr int kDesiredPathSamples = 400;
 
 }  // namespace
@@ -49,15 +46,15 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       parsedParam(pnh, "law", "smooth", terrain::pursuitLawFromString), type_, terrain_config,
       radius_);
 
-  command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", kLoopQueueSize);
+  command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
   state_sub_ = nh.subscribe("terrain_state", 10, &PurePursuitRos::onTerrainState, this);
   if (mode_ == Mode::Tracking) {
     surface_ = config::makeSurface(terrain_config.surface);
     path_ = parsedParam(pnh, "path", "circle", [&terrain_config](const std::string& name) {
       return config::makePath(name, terrain_config);
     });
-    error_pub_ = nh.advertise<spherical_robots::TrackingError>("tracking_error", kLoopQueueSize);
-    target_pub_ = nh.advertise<geometry_msgs::PointStamped>("target", kLoopQueueSize);
+    error_pub_ = step_publications_.advertise<spherical_robots::TrackingError>(nh, "tracking_error");
+    target_pub_ = step_publications_.advertise<geometry_msgs::PointStamped>(nh, "target");
     desired_path_pub_ = nh.advertise<nav_msgs::Path>("desired_path", 1, true);
     desired_path_pub_.publish(conversions::sampledPath(*path_, *surface_, kDesiredPathSamples,
                                                        kWorldFrame, ros::Time::now()));
@@ -87,7 +84,7 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       nh, std::vector<std::pair<ros::Timer*, double>>{{&timer_, period}}, clock_.maxStep());
 }
 
-ros::Time PurePursuitRos::now() const { return lockstep_ ? lockstep_->now() : ros::Time::now(); }
+ros::Time PurePursuitRos::now() const { return workingTime(lockstep_.get()); }
 
 void PurePursuitRos::onTerrainState(const spherical_robots::TerrainState& msg) {
   if (msg.robot_type != terrain::toString(type_)) {
@@ -160,10 +157,8 @@ std::vector<std::string> PurePursuitRos::control(const ros::Time& now) {
                                                                 << " failures so far), commanding zero: "
                                                                 << e.what());
   }
-  command_pub_.publish(shared(conversions::jointStateFromRates(type_, command_, now)));
-  std::vector<std::string> published = {command_pub_.getTopic()};
-  if (mode_ == Mode::Tracking) published.insert(published.end(), {error_pub_.getTopic(), target_pub_.getTopic()});
-  return published;
+  command_pub_.publish(conversions::jointStateFromRates(type_, command_, now));
+  return step_publications_.take();
 }
 
 terrain::DriveRates PurePursuitRos::track(const ros::Time& now) {

@@ -79,15 +79,25 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
                                 pnh.resolveName("max_rotor_speed") + " must be >= 0");
   }
   service_ = pnh.advertiseService("plan", &RotorPlannerRos::onPlan, this);
-  command_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/command", 10);
+  command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
   done_pub_ = nh.advertise<std_msgs::UInt32>("execution_done", 1, true);
   execute_sub_ = pnh.subscribe("execute", 1, &RotorPlannerRos::onExecute, this);
   odom_sub_ = nh.subscribe("odom", 10, &RotorPlannerRos::onOdometry, this);
-  command_timer_ = nh_.createTimer(ros::Duration(command_period_), &RotorPlannerRos::onCommandTimer,
-                                   this, false, false);
-  timer_guard_ = std::make_unique<TimerJumpGuard>(
-      nh, std::vector<std::pair<ros::Timer*, double>>{{&command_timer_, command_period_}},
-      clock_.maxStep());
+  if (isLockstepParticipant(nh, pnh)) {
+    // Asked every command period, also between manoeuvres (it has nothing to send then).
+    lockstep_ = std::make_unique<LockstepParticipant>(
+        nh, pnh, std::vector<ros::Subscriber>{odom_sub_}, [this](const ros::Time& now) {
+          command(now);
+          return LockstepParticipant::Done{step_publications_.take(),
+                                           now + ros::Duration(command_period_)};
+        });
+  } else {
+    command_timer_ = nh_.createTimer(ros::Duration(command_period_),
+                                     &RotorPlannerRos::onCommandTimer, this, false, false);
+    timer_guard_ = std::make_unique<TimerJumpGuard>(
+        nh, std::vector<std::pair<ros::Timer*, double>>{{&command_timer_, command_period_}},
+        clock_.maxStep());
+  }
   // The updater publishes only when called: a wall timer keeps /diagnostics going (and the odom
   // input's staleness visible) when no odom arrives.
   diagnostics_timer_ = startDiagnostics(nh, updater_);
@@ -150,7 +160,7 @@ bool RotorPlannerRos::onPlan(spherical_robots::PlanRotorMotion::Request& request
 
 void RotorPlannerRos::publishPlan(double k, int steps, double a, double b, double gamma) {
   const rotor::FigureEight curve(a, b, gamma);
-  const ros::Time stamp = ros::Time::now();
+  const ros::Time stamp = workingTime(lockstep_.get());
   nav_msgs::Path path;
   path.header.frame_id = frame_id_;
   path.header.stamp = stamp;
@@ -221,7 +231,7 @@ bool RotorPlannerRos::startExecution(std::uint32_t index, const rotor::FigureEig
                            [k, scale, curve, timing](double t) {
                              return rotor::planSetPointAt(k, scale, curve, timing, t);
                            },
-                           timing.duration(), ros::Time::now(), goal, corrections_left, false};
+                           timing.duration(), workingTime(lockstep_.get()), goal, corrections_left, false};
     ROS_INFO_STREAM("rotor_planner: executing plan " << index << " (" << steps
                                                      << " steps, theta rate " << rate
                                                      << " rad/s, peak rotor speed " << peak * rate
@@ -263,14 +273,14 @@ bool RotorPlannerRos::startPoleReturn(const rotor::PoleReturnArc& arc, int corre
                          [k, scale, arc, timing](double t) {
                            return rotor::arcSetPointAt(k, scale, arc, timing, t);
                          },
-                         timing.duration(), ros::Time::now(), goal, corrections_left, true};
+                         timing.duration(), workingTime(lockstep_.get()), goal, corrections_left, true};
   command_timer_.start();
   return true;
 }
 
 bool RotorPlannerRos::startCorrection() {
   if (execution_->corrections_left <= 0) return false;
-  if (!odom_input_.fresh(ros::Time::now())) {
+  if (!odom_input_.fresh(workingTime(lockstep_.get()))) {
     refuse("no fresh odom on " + odom_input_.topic() + ": no correction from a stale rest");
     return false;
   }
@@ -360,14 +370,18 @@ void RotorPlannerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat
     status.addf("last end: miss [m]", "%.3e", last_miss_->first);
     status.addf("last end: heading miss [rad]", "%.3e", last_miss_->second);
   }
-  odom_input_.report(status, ros::Time::now());
+  odom_input_.report(status, workingTime(lockstep_.get()));
 }
 
 void RotorPlannerRos::onCommandTimer(const ros::TimerEvent& event) {
   timer_guard_->observe(event);
-  const ros::Time now = ros::Time::now();
+  command(ros::Time::now());
+  step_publications_.take();
+}
+
+void RotorPlannerRos::command(const ros::Time& now) {
   const double jump = clock_.jumpOver(now.toSec());
-  if (jump != 0.0) timer_guard_->reset();
+  if (jump != 0.0 && timer_guard_) timer_guard_->reset();
   if (!execution_) return;
   if (jump != 0.0) {
     // The schedule goes on from where it was, not from where the jump would put it.
@@ -402,7 +416,7 @@ void RotorPlannerRos::onOdometry(const nav_msgs::Odometry& msg) {
   const geometry_msgs::Quaternion& q = msg.pose.pose.orientation;
   try {
     const std::string stamp_problem =
-        stampProblem(msg.header.stamp, ros::Time::now(), max_stamp_skew_);
+        stampProblem(msg.header.stamp, workingTime(lockstep_.get()), max_stamp_skew_);
     if (!stamp_problem.empty()) throw std::invalid_argument("odom " + stamp_problem);
     conversions::boundedPoint(centre, "odom pose.position", max_position_);
     const Eigen::Quaterniond attitude =
@@ -412,14 +426,15 @@ void RotorPlannerRos::onOdometry(const nav_msgs::Odometry& msg) {
     rest_pose_ = pose;
   } catch (const std::invalid_argument& error) {
     odom_input_.reject(error.what());  // logged; the last good rest pose stays
+    if (lockstep_) lockstep_->received(odom_sub_.getTopic(), msg.header.stamp);
     return;
   }
-  odom_input_.accept(ros::Time::now());
-  if (!execution_) return;
-  if (driven_.due(msg.header.stamp)) {
+  odom_input_.accept(workingTime(lockstep_.get()));
+  if (execution_ && driven_.due(msg.header.stamp)) {
     driven_.add(msg.header.stamp, {centre.x, centre.y, centre.z},
                 conversions::fromQuaternion(q, "odom pose.orientation", kOdomUnitTolerance));
   }
+  if (lockstep_) lockstep_->received(odom_sub_.getTopic(), msg.header.stamp);
 }
 
 }  // namespace spherical_robots

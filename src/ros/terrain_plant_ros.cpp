@@ -1,13 +1,10 @@
 #include "spherical_robots/ros/terrain_plant_ros.hpp"
 
-#include "spherical_robots/ros/diagnostics_timer.hpp"
-#include "spherical_robots/ros/loop_publishers.hpp"
-
 #include <nav_msgs/Odometry.h>
 #include <visualization_msgs/Marker.h>
 
-#include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "spherical_robots/TerrainState.h"
@@ -19,9 +16,17 @@
 namespace spherical_robots {
 namespace {
 
-const std::string kWorldFrame = "world";
-constexpr std::size_t kMaxTrailPoints = 2000;
-
+PlantLoop::Defaults loopDefaults(terrain::RobotType type) {
+  PlantLoop::Defaults defaults;
+  defaults.task = "terrain plant";
+  defaults.hardware_id = terrain::toString(type) + " sphere";
+  defaults.step = 0.01;
+  defaults.pace = 10.0;
+  defaults.state_timeout = 0.5;
+  defaults.trail_period = 0.5;
+  defaults.max_trail_points = 2000;
+  return defaults;
+}
 
 }  // namespace
 
@@ -29,13 +34,8 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : type_(parsedParam(pnh, "robot_type", "3R", terrain::robotTypeFromString)),
       base_frame_(stringParam(pnh, "frame_prefix", "") + "base_link"),
       heading_frame_(stringParam(pnh, "frame_prefix", "") + "heading"),
-      step_(positiveParam(pnh, "step", 0.01)),
-      timeline_(pnh),
-      publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
-      trail_(nh, "trail", kWorldFrame, positiveParam(pnh, "trail_period", 0.5), kMaxTrailPoints),
       max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
-      actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "state_timeout", 0.5)),
-      updater_(nh, pnh) {
+      loop_(nh, pnh, loopDefaults(type_)) {
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
   const double radius = radiusFromRobotDescription(nh);
   const auto model = parsedParam(pnh, "contact_model", "paper", terrain::contactModelFromString);
@@ -47,64 +47,30 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   state_.psi = numberParam(pnh, "initial_psi", 0.0);
   orientation_ = Eigen::Quaterniond(kinematics_->geometry(state_).heading_frame);
 
-  actuator_sub_ = nh.subscribe("actuators/state", 10, &TerrainPlantRos::onActuatorState, this);
-  odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", kLoopQueueSize);
-  state_pub_ = nh.advertise<spherical_robots::TerrainState>("terrain_state", kLoopQueueSize);
+  odom_pub_ = loop_.advertise<nav_msgs::Odometry>("odom");
+  state_pub_ = loop_.advertise<spherical_robots::TerrainState>("terrain_state");
   marker_pub_ = nh.advertise<visualization_msgs::Marker>("terrain_marker", 1, true);
   marker_pub_.publish(conversions::surfaceMesh(*surface_, positiveParam(pnh, "marker_half_extent", 3.0),
                                                positiveParam(pnh, "marker_resolution", 0.1),
                                                kWorldFrame, ros::Time::now()));
-
-  updater_.setHardwareID(terrain::toString(type_) + " sphere");
-  updater_.add("terrain plant", this, &TerrainPlantRos::diagnose);
-  diagnostics_timer_ = startDiagnostics(nh, updater_);
-
   ROS_INFO_STREAM(terrain::toString(type_) << " sphere, R = " << radius << " m, "
                                            << terrain::toString(model) << " contact model, on "
                                            << surface_->describe() << "; frames " << base_frame_
                                            << ", " << heading_frame_);
-  clock_ = makePlantClock(nh, pnh, step_, 10.0, [this](const ros::Time& now) { return tick(now); },
-                          state_pub_, actuator_sub_);
+  loop_.start(*this, state_pub_);
 }
 
-void TerrainPlantRos::onActuatorState(const sensor_msgs::JointState& msg) {
-  try {
-    measured_ = conversions::ratesFromJointState(type_, msg, max_actuator_rate_);
-    actuator_input_.accept(clock_ ? clock_->now() : ros::Time::now());
-  } catch (const std::invalid_argument& e) {
-    actuator_input_.reject(e.what());
-  }
-  if (clock_) clock_->received(actuator_sub_.getTopic(), msg.header.stamp);
+void TerrainPlantRos::read(const sensor_msgs::JointState& actuators) {
+  measured_ = conversions::ratesFromJointState(type_, actuators, max_actuator_rate_);
 }
 
-std::vector<std::string> TerrainPlantRos::tick(const ros::Time& now) {
-  if (timeline_.finished()) return {};
-  const terrain::DriveRates rates =
-      actuator_input_.fresh(now) ? measured_ : terrain::DriveRates{};
-  timeline_.tick(now, [&](double elapsed) { integrate(elapsed, rates); });
-
-  std::vector<std::string> published;
-  if (periodDue(last_publish_, now, publish_period_)) {
-    publishState(now, rates);
-    published = {odom_pub_.getTopic(), state_pub_.getTopic(), "/tf"};
-  }
-  if (trail_.due(now)) {
-    const terrain::ContactGeometry geometry = kinematics_->geometry(state_);
-    trail_.add(now, geometry.contact_point, Eigen::Quaterniond(geometry.heading_frame));
-  }
-
-  if (timeline_.complete(now)) {
-    ROS_INFO_STREAM("scenario complete after " << timeline_.duration()
-                                                << " s, contact point at (" << state_.x << ", "
-                                                << state_.y << ") m");
-    clock_->finish();
-  }
-  return published;
+terrain::DriveRates TerrainPlantRos::rates(bool actuators_fresh) const {
+  return actuators_fresh ? measured_ : terrain::DriveRates{};
 }
 
-void TerrainPlantRos::integrate(double elapsed, const terrain::DriveRates& rates) {
-  const terrain::RollingState next =
-      terrain::advanceWithHeldRates(*kinematics_, {state_, orientation_}, rates, elapsed, step_);
+void TerrainPlantRos::advance(double elapsed, bool actuators_fresh) {
+  const terrain::RollingState next = terrain::advanceWithHeldRates(
+      *kinematics_, {state_, orientation_}, rates(actuators_fresh), elapsed, loop_.step());
   // Nothing non-finite is published: a step that would produce it is a failed step.
   if (!std::isfinite(next.state.x) || !std::isfinite(next.state.y) ||
       !std::isfinite(next.state.psi) || !std::isfinite(next.state.phi) ||
@@ -114,23 +80,27 @@ void TerrainPlantRos::integrate(double elapsed, const terrain::DriveRates& rates
   orientation_ = next.orientation;
 }
 
-void TerrainPlantRos::publishState(const ros::Time& now, const terrain::DriveRates& rates) {
-  last_publish_ = now;
+void TerrainPlantRos::publishPeriodic(const ros::Time& now, bool actuators_fresh) {
+  const terrain::DriveRates drive = rates(actuators_fresh);
   const terrain::ContactGeometry geometry = kinematics_->geometry(state_);
   const Eigen::Quaterniond heading(geometry.heading_frame);
   odom_pub_.publish(conversions::toOdometry(geometry.centre, orientation_,
-                                            kinematics_->centreVelocity(state_, rates),
-                                            kinematics_->shellAngularVelocity(state_, rates),
+                                            kinematics_->centreVelocity(state_, drive),
+                                            kinematics_->shellAngularVelocity(state_, drive),
                                             kWorldFrame, base_frame_, now));
-  tf_broadcaster_.sendTransform(
+  loop_.tf().sendTransform(
       {conversions::toTransform(geometry.centre, orientation_, kWorldFrame, base_frame_, now),
        conversions::toTransform(geometry.contact_point, heading, kWorldFrame, heading_frame_, now)});
   state_pub_.publish(conversions::toTerrainStateMsg(type_, kinematics_->model(), state_, geometry,
-                                                    kinematics_->realisedRates(state_, rates), now));
+                                                    kinematics_->realisedRates(state_, drive), now));
+}
+
+std::optional<PlantModel::Pose> TerrainPlantRos::trailPose() const {
+  const terrain::ContactGeometry geometry = kinematics_->geometry(state_);
+  return Pose{geometry.contact_point, Eigen::Quaterniond(geometry.heading_frame)};
 }
 
 void TerrainPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
-  const ros::Time now = ros::Time::now();
   status.summary(diagnostic_msgs::DiagnosticStatus::OK, "rolling");
   status.add("robot type", terrain::toString(type_));
   status.add("contact model", terrain::toString(kinematics_->model()));
@@ -138,7 +108,12 @@ void TerrainPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat
   status.add("y [m]", state_.y);
   status.add("psi [rad]", state_.psi);
   status.add("phi [rad]", state_.phi);
-  reportPlantHealth(status, now, *clock_, timeline_, actuator_input_);
+}
+
+std::string TerrainPlantRos::describeState() const {
+  std::ostringstream text;
+  text << "contact point at (" << state_.x << ", " << state_.y << ") m";
+  return text.str();
 }
 
 }  // namespace spherical_robots

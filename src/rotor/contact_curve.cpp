@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "spherical_robots/core/sin_cos.hpp"
 #include "spherical_robots/core/validation.hpp"
 
 namespace spherical_robots::rotor {
@@ -40,11 +41,11 @@ void requireFiniteTangent(const Eigen::Vector3d& tangent) {
   requireFinite(tangent.z(), "curve tangent z [R]");
 }
 
-/// c_uᵀ c_θ and c_vᵀ c_θ (eq 26) for unit R.
-Eigen::Vector2d projections(const CurvePoint& curve, double w) {
+/// c_uᵀ c_θ and c_vᵀ c_θ (eq 26) for unit R, with w = cos v_o and inverse_w = 1 / w.
+Eigen::Vector2d projections(const CurvePoint& curve, double w, double inverse_w) {
   const Eigen::Vector3d& c = curve.point;
   const Eigen::Vector3d c_u(c.z(), 0.0, -c.x());
-  const Eigen::Vector3d c_v(-c.x() * c.y() / w, w, -c.y() * c.z() / w);
+  const Eigen::Vector3d c_v(-c.x() * c.y() * inverse_w, w, -c.y() * c.z() * inverse_w);
   return {c_u.dot(curve.tangent), c_v.dot(curve.tangent)};
 }
 
@@ -58,8 +59,9 @@ Eigen::Vector2d contactAngles(const Eigen::Vector3d& point) {
 Eigen::Vector2d contactAngleRates(const CurvePoint& curve) {
   const double w = checkedCosV(curve.point);
   requireFiniteTangent(curve.tangent);
-  const Eigen::Vector2d p = projections(curve, w);
-  return {p.x() / (w * w), p.y()};  // eq 27
+  const double inverse_w = 1.0 / w;
+  const Eigen::Vector2d p = projections(curve, w, inverse_w);
+  return {p.x() * inverse_w * inverse_w, p.y()};  // eq 27
 }
 
 PlaneState realizableCurveRates(double k, const CurvePoint& curve, double psi) {
@@ -67,13 +69,18 @@ PlaneState realizableCurveRates(double k, const CurvePoint& curve, double psi) {
   requireFinite(psi, "psi [rad]");
   const double w = checkedCosV(curve.point);
   requireFiniteTangent(curve.tangent);
-  const Eigen::Vector2d p = projections(curve, w);
-  const double cp = std::cos(psi), sp = std::sin(psi);
   const Eigen::Vector3d& c = curve.point;
+  // One division for the three of eqs 28-30 (1/w, 1/w², 1/(z w)): this runs at every stage of
+  // the planner's integrations.
+  const double inverse_zw = 1.0 / (c.z() * w);
+  const double inverse_w = c.z() * inverse_zw;
+  const Eigen::Vector2d p = projections(curve, w, inverse_w);
+  const auto [sp, cp] = sinCos(psi);
+  const double u_rate = p.x() * inverse_w;  // u_o' cos v_o (eq 27)
   PlaneState rates;
-  rates.u_a = -cp / w * p.x() + sp * p.y();                                          // eq 28
-  rates.v_a = sp / w * p.x() + cp * p.y();                                           // eq 29
-  rates.psi = (1.0 - k) * c.y() * p.x() / (w * w) + k * c.x() * p.y() / (c.z() * w);  // eq 30
+  rates.u_a = -cp * u_rate + sp * p.y();                                           // eq 28
+  rates.v_a = sp * u_rate + cp * p.y();                                            // eq 29
+  rates.psi = (1.0 - k) * c.y() * u_rate * inverse_w + k * c.x() * p.y() * inverse_zw;  // eq 30
   return rates;
 }
 

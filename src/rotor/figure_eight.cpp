@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "spherical_robots/core/sin_cos.hpp"
 #include "spherical_robots/core/validation.hpp"
 
 namespace spherical_robots::rotor {
@@ -32,7 +33,7 @@ void requireRadius(double r, std::string_view what) {
 
 /// Eq 35 for a checked radius a with d = √(1 − a²) (= cos α; sin α = a).
 CurvePoint circlePoint(double a, double d, double phi, bool mirrored) {
-  const double s = std::sin(phi), c = std::cos(phi);
+  const auto [s, c] = sinCos(phi);
   const double y_sign = mirrored ? -1.0 : 1.0;
   CurvePoint out;
   out.point = {a * s, y_sign * (-a * d * c + d * a), -a * a * c - d * d};

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "spherical_robots/core/sin_cos.hpp"
 #include "spherical_robots/core/validation.hpp"
 #include "spherical_robots/rotor/figure_eight.hpp"
 #include "spherical_robots/rotor/geometric_phase.hpp"
@@ -114,13 +115,15 @@ struct PhaseGrid {
   explicit PhaseGrid(const LeafTable& table) : n(table.radius.size()), eta(n * n), h(n * n) {
     for (std::size_t i = 0; i < n; ++i) {
       const LeafPhase& first = table.leaf[i];
-      const double c = std::cos(first.holonomy), s = std::sin(first.holonomy);
+      const auto [s, c] = sinCos(first.holonomy);
       for (std::size_t j = 0; j < n; ++j) {
         const LeafPhase& second = table.leaf[j];
         // shift = s(a) + Rot(−η(a)) diag(1, −1) s(b), as composeLeaves.
         const double x = second.shift.x(), y = -second.shift.y();
         eta[i * n + j] = first.holonomy - second.holonomy;
-        h[i * n + j] = std::hypot(first.shift.x() + c * x + s * y, first.shift.y() - s * x + c * y);
+        // |shift| by sqrt, not hypot: shifts of at most a few R neither overflow nor underflow.
+        const double u = first.shift.x() + c * x + s * y, v = first.shift.y() - s * x + c * y;
+        h[i * n + j] = std::sqrt(u * u + v * v);
       }
     }
     eta_lo = *std::min_element(eta.begin(), eta.end());

@@ -1,4 +1,5 @@
 #include "spherical_robots/terrain/pure_pursuit.hpp"
+#include "spherical_robots/core/sin_cos.hpp"
 #include "spherical_robots/core/validation.hpp"
 
 #include <cmath>
@@ -51,8 +52,7 @@ DriveRates PurePursuitController::command(const TrackingError& error,
   }
   const double normalised = error.norm / (gains_.k_e + error.norm);
   const double feed_forward = desired_velocity.norm() / radius_;
-  const double cos_zeta = std::cos(error.zeta);
-  const double sin_zeta = std::sin(error.zeta);
+  const auto [sin_zeta, cos_zeta] = sinCos(error.zeta);
   const auto lateral = [&](double k_phi1, double k_phi2) {
     return -(k_phi1 * normalised + k_phi2) * sin_zeta;
   };

@@ -15,11 +15,13 @@ PursuitLaw pursuitLawFromString(const std::string& name) {
 std::string toString(PursuitLaw law) { return law == PursuitLaw::Paper ? "paper" : "smooth"; }
 
 // Eq 53, and eq 54 signed: atan2 of e_t's components along l and h.
-TrackingError trackingError(const ContactGeometry& geometry, const Eigen::Vector3d& desired) {
+TrackingError trackingError(const ContactGeometry& geometry, const Eigen::Vector3d& desired,
+                            bool with_zeta) {
   if (!desired.allFinite()) throw std::invalid_argument("tracking error: desired point not finite");
   TrackingError result;
   result.error = desired - geometry.contact_point;
   result.norm = result.error.norm();
+  if (!with_zeta) return result;
   const double along_heading = result.error.dot(geometry.heading_frame.col(0));
   const double along_left = result.error.dot(geometry.heading_frame.col(1));
   // Along n the direction in the plane is round-off, not information. hypot(a, b) is never below

@@ -1,4 +1,5 @@
 #include "spherical_robots/terrain/reference_path.hpp"
+#include "spherical_robots/core/sin_cos.hpp"
 #include "spherical_robots/core/validation.hpp"
 
 #include <algorithm>
@@ -26,8 +27,7 @@ CirclePath::CirclePath(double radius, double angular_rate)
 // Eq 60 corrected: the printed y = 2 cos(0.05 t) would make the path a line.
 PathPoint CirclePath::at(double t) const {
   requireFiniteTime(t);
-  const double cos_wt = std::cos(angular_rate_ * t);
-  const double sin_wt = std::sin(angular_rate_ * t);
+  const auto [sin_wt, cos_wt] = sinCos(angular_rate_ * t);
   PathPoint point;
   point.position = radius_ * Eigen::Vector2d(cos_wt, sin_wt);
   point.velocity = radius_ * angular_rate_ * Eigen::Vector2d(-sin_wt, cos_wt);

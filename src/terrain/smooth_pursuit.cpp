@@ -58,7 +58,8 @@ void validate(const SmoothPursuitGains& gains) {
 
 SmoothPursuitController::SmoothPursuitController(RobotType type, const SmoothPursuitGains& gains,
                                                  double radius, double tilt_limit)
-    : type_(type), gains_(gains), radius_(radius) {
+    : type_(type), gains_(gains), inverse_radius_(1.0 / radius),
+      max_tilt_sine_(std::sin(gains.max_tilt)) {
   validate(gains);
   requirePositive(radius, "smooth pursuit: radius [m]");
   requirePositive(tilt_limit, "smooth pursuit: RS tilt limit [rad]");
@@ -75,8 +76,8 @@ SmoothPursuitController::SmoothPursuitController(RobotType type, const SmoothPur
 Eigen::Vector3d SmoothPursuitController::desiredVelocity(
     const TrackingError& error, const Eigen::Vector3d& desired_velocity) const {
   const Eigen::Vector3d along =
-      desired_velocity /
-      std::sqrt(desired_velocity.squaredNorm() + gains_.min_speed * gains_.min_speed);
+      desired_velocity *
+      (1.0 / std::sqrt(desired_velocity.squaredNorm() + gains_.min_speed * gains_.min_speed));
   const Eigen::Vector3d linear = gains_.cross_gain * error.error +
                                  (gains_.along_gain - gains_.cross_gain) *
                                      error.error.dot(along) * along;
@@ -103,16 +104,16 @@ DriveRates SmoothPursuitController::command(const ContactGeometry& geometry, dou
   DriveRates rates;
   switch (type_) {
     case RobotType::ThreeAxisRolling:  // the contact point moves with R theta' h - R phi' l (eq 33)
-      rates.roll_rate = forward / radius_;
-      rates.lateral_rate = -leftward / radius_;
+      rates.roll_rate = forward * inverse_radius_;
+      rates.lateral_rate = -leftward * inverse_radius_;
       rates.turn_rate = turn;
       break;
     case RobotType::TwoAxisRolling:
-      rates.roll_rate = forward / radius_;
-      rates.lateral_rate = -leftward / radius_;
+      rates.roll_rate = forward * inverse_radius_;
+      rates.lateral_rate = -leftward * inverse_radius_;
       break;
     case RobotType::RollingAndTurning:  // R theta' h only (eq 38): u's sideways part by turning
-      rates.roll_rate = forward / radius_;
+      rates.roll_rate = forward * inverse_radius_;
       rates.turn_rate = turn;
       break;
     case RobotType::RollingAndSteering: {
@@ -123,12 +124,12 @@ DriveRates SmoothPursuitController::command(const ContactGeometry& geometry, dou
       // max_tilt; the tilt rate servos phi towards phi*, smoothly bounded by max_tilt_rate.
       // |u| by sqrt, not hypot: speeds of metres per second neither overflow nor underflow.
       const double planar_speed = std::sqrt(forward * forward + leftward * leftward);
-      rates.roll_rate = 0.5 * (planar_speed + forward) / (radius_ * std::cos(tilt));
-      const double roll_floor = gains_.min_speed / radius_;
+      rates.roll_rate = 0.5 * (planar_speed + forward) * inverse_radius_ / std::cos(tilt);
+      const double roll_floor = gains_.min_speed * inverse_radius_;
       const double sine = -turn * rates.roll_rate /
                           (rates.roll_rate * rates.roll_rate + roll_floor * roll_floor);
-      const double max_sine = std::sin(gains_.max_tilt);
-      const double target_tilt = std::asin(max_sine * std::tanh(sine / max_sine));
+      const double target_tilt =
+          std::asin(max_tilt_sine_ * std::tanh(sine / max_tilt_sine_));
       rates.lateral_rate =
           gains_.max_tilt_rate *
           std::tanh(gains_.tilt_gain * (target_tilt - tilt) / gains_.max_tilt_rate);

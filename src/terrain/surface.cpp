@@ -1,4 +1,5 @@
 #include "spherical_robots/terrain/surface.hpp"
+#include "spherical_robots/core/sin_cos.hpp"
 #include "spherical_robots/core/validation.hpp"
 
 #include <Eigen/LU>
@@ -16,10 +17,8 @@ CosineSurface::CosineSurface(double amplitude, double frequency)
 
 // Eq 59 and its derivatives.
 SurfacePoint CosineSurface::evaluate(double x, double y) const {
-  const double cos_x = std::cos(frequency_ * x);
-  const double sin_x = std::sin(frequency_ * x);
-  const double cos_y = std::cos(frequency_ * y);
-  const double sin_y = std::sin(frequency_ * y);
+  const auto [sin_x, cos_x] = sinCos(frequency_ * x);
+  const auto [sin_y, cos_y] = sinCos(frequency_ * y);
   SurfacePoint point;
   point.height = amplitude_ * (cos_x + cos_y - 2.0);
   point.gradient = -amplitude_ * frequency_ * Eigen::Vector2d(sin_x, sin_y);

@@ -75,8 +75,9 @@ void TerrainSimulation::step(double dt) {
     const TerrainState state = fromOde(x);
     const ContactGeometry geometry = kinematics_.geometry(state);
     const DesiredPoint& desired = desiredAt(t);
-    const DriveRates rates =
-        realisedCommand(state, geometry, trackingError(geometry, desired.position), desired);
+    const DriveRates rates = realisedCommand(
+        state, geometry, trackingError(geometry, desired.position, controller_.readsZeta()),
+        desired);
     dxdt = toOde(kinematics_.realisedStateRate(state, geometry, rates));
   };
   OdeState x = toOde(state_);

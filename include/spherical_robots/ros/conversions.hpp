@@ -31,6 +31,13 @@
 #include "spherical_robots/terrain/surface.hpp"
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
 
+namespace spherical_robots {
+
+/// The fixed frame of every plant and controller.
+inline const std::string kWorldFrame = "world";
+
+}  // namespace spherical_robots
+
 namespace spherical_robots::conversions {
 
 // --- Eigen <-> geometry_msgs -----------------------------------------------------------------

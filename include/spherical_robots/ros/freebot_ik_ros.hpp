@@ -19,6 +19,8 @@
 #include "spherical_robots/freebot/freebot_chain.hpp"
 #include "spherical_robots/freebot/src_inverse_kinematics.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/lockstep_participant.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 
 namespace spherical_robots {
 
@@ -56,6 +58,8 @@ class FreebotIkRos {
   };
 
   void onState(const spherical_robots::FreebotState& msg);
+  /// Wheel speeds towards the goal (or zero) from one state (nothing for a rejected one).
+  void drive(const spherical_robots::FreebotState& msg);
   void onGoal(const geometry_msgs::PoseStamped& msg);
   bool onSolve(spherical_robots::SolveFreebotIk::Request& request,
                spherical_robots::SolveFreebotIk::Response& response);
@@ -88,9 +92,12 @@ class FreebotIkRos {
   unsigned long unreachable_ = 0;
   InputMonitor state_input_;
   InputMonitor goal_input_;
+  StepPublications step_publications_;
+  /// Drives from each state when it comes, or in lock-step at the step it is stamped with.
+  MessageDrivenWork<spherical_robots::FreebotState> work_;
   ros::Subscriber state_sub_;
   ros::Subscriber goal_sub_;
-  ros::Publisher command_pub_;
+  LoopPublisher command_pub_;
   ros::Publisher result_pub_;
   ros::Publisher target_pub_;
   ros::ServiceServer solve_server_;

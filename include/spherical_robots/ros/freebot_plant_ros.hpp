@@ -3,20 +3,12 @@
 // hardware interface (core FreebotChain::advance), published as the chain state, tf for every
 // module's sphere and rviz markers. With a real driver it is the chain's dead-reckoning estimate.
 
-#include <diagnostic_updater/diagnostic_updater.h>
-#include <ros/ros.h>
-#include <sensor_msgs/JointState.h>
-
-#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "spherical_robots/freebot/freebot_chain.hpp"
-#include "spherical_robots/ros/input_monitor.hpp"
-#include "spherical_robots/ros/plant_timeline.hpp"
-#include "spherical_robots/ros/loop_publishers.hpp"
-#include "spherical_robots/ros/plant_clock.hpp"
-#include "spherical_robots/ros/trail.hpp"
+#include "spherical_robots/ros/plant_loop.hpp"
 
 namespace spherical_robots {
 
@@ -38,36 +30,29 @@ std::string freebotLinkFrame(const std::string& prefix, std::size_t i);
 /// freebot_state (every tick), tf world -> <prefix>link0 (identity) and <prefix>link<i-1> ->
 /// <prefix>link<i> (B_i's centre and q_i), freebot_markers (spheres and trolleys), trail (B_n's
 /// centre, nav_msgs/Path in world) and /diagnostics.
-class FreebotPlantRos {
+class FreebotPlantRos : private PlantModel {
  public:
   /// @throw std::invalid_argument on a bad parameter.
   FreebotPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh);
 
  private:
-  void onActuatorState(const sensor_msgs::JointState& msg);
-  /// One step at now; returns the topics it published.
-  std::vector<std::string> tick(const ros::Time& now);
-  void publishFrames(const ros::Time& now);
-  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+  void read(const sensor_msgs::JointState& actuators) override;
+  void advance(double elapsed, bool actuators_fresh) override;
+  void publishEveryStep(const ros::Time& now, bool actuators_fresh) override;
+  /// tf of every module's sphere and the markers.
+  void publishPeriodic(const ros::Time& now, bool actuators_fresh) override;
+  std::optional<Pose> trailPose() const override;
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) override;
+  std::string describeState() const override;
 
   freebot::FreebotChain chain_;
   std::string prefix_;
-  double step_;
-  PlantTimeline timeline_;
   double max_actuator_rate_;  ///< [rad/s] a measured rate beyond it is rejected (plausibility)
-  double publish_period_;
-  Trail trail_;
   freebot::ChainState state_;
   std::vector<freebot::WheelSpeeds> wheels_;  ///< last measured [rad/s]
-  ros::Time last_publish_;
-  InputMonitor actuator_input_;
-  ros::Subscriber actuator_sub_;
-  ros::Publisher state_pub_;
-  ros::Publisher marker_pub_;
-  TfPublisher tf_broadcaster_;
-  diagnostic_updater::Updater updater_;
-  ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
-  std::unique_ptr<PlantClock> clock_;  ///< last: it ticks only once everything else exists
+  LoopPublisher state_pub_;
+  LoopPublisher marker_pub_;
+  PlantLoop loop_;  ///< last: its clock stops before the rest goes
 };
 
 }  // namespace spherical_robots

@@ -19,6 +19,8 @@
 
 #include "spherical_robots/roller/roller_actuation.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/lockstep_participant.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 
 namespace spherical_robots {
 
@@ -33,14 +35,17 @@ class FrictionDriveControllerRos {
 
  private:
   void onDriveCommand(const sensor_msgs::JointState& msg);
+  void convert(const sensor_msgs::JointState& msg);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   roller::RollerActuation actuation_;
   std::vector<double> last_motor_rates_;
   double max_actuator_rate_;  ///< [rad/s] a rate beyond it is rejected (plausibility)
   InputMonitor input_;
+  StepPublications step_publications_;
+  MessageDrivenWork<sensor_msgs::JointState> work_;
   ros::Subscriber command_sub_;
-  ros::Publisher command_pub_;
+  LoopPublisher command_pub_;
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;
 };
@@ -57,6 +62,7 @@ class FrictionDriveSimRos {
 
  private:
   void onActuatorState(const sensor_msgs::JointState& msg);
+  void drive(const sensor_msgs::JointState& msg);
   void publishMarkers(const roller::DriveState& state, const ros::Time& stamp);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
@@ -67,10 +73,12 @@ class FrictionDriveSimRos {
   ros::Time last_markers_;
   roller::DriveState last_state_;
   InputMonitor input_;
+  StepPublications step_publications_;
+  MessageDrivenWork<sensor_msgs::JointState> work_;
   ros::Subscriber state_sub_;
-  ros::Publisher drive_state_pub_;
-  ros::Publisher drive_pub_;
-  ros::Publisher marker_pub_;
+  LoopPublisher drive_state_pub_;
+  LoopPublisher drive_pub_;
+  LoopPublisher marker_pub_;
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;
 };

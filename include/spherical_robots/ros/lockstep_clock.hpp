@@ -4,6 +4,9 @@
 // in turn (lockstep/step) and waits for its acknowledgement (lockstep/ack), then for the
 // messages the participants published that the plant reads, and only then steps again. The
 // decisions are core/lockstep_sequencer.hpp's; this class is their transport, pace and services.
+// With a leader (a second stack on the master), the plant does not publish /clock: it is a
+// participant of the leader's barrier, and each of its steps is asked for by the leader and
+// acknowledged once its own participants have answered, so that every stack shares one barrier.
 
 #include <ros/callback_queue_interface.h>
 #include <ros/message_event.h>
@@ -15,12 +18,14 @@
 #include <std_srvs/Empty.h>
 #include <std_srvs/Trigger.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "spherical_robots/LockstepAck.h"
 #include "spherical_robots/core/lockstep_inputs.hpp"
 #include "spherical_robots/core/lockstep_sequencer.hpp"
+#include "spherical_robots/ros/lockstep_participant.hpp"
 #include "spherical_robots/ros/plant_clock.hpp"
 
 namespace spherical_robots {
@@ -34,10 +39,14 @@ class LockstepClock : public PlantClock {
     double start_timeout = 10.0;  ///< [s] of wall time to wait for the participants to join
     std::vector<std::string> participants;   ///< resolved node names, in order of work
     std::vector<std::string> subscriptions;  ///< resolved topics the plant reads
+    /// The namespace of the stack whose plant owns /clock; empty: this plant owns it.
+    std::string leader;
+    /// The plant's node name (its private namespace): its name in the leader's barrier.
+    std::string name;
   };
 
-  /// Advertises /clock, lockstep/step, and the services lockstep/pause, lockstep/resume
-  /// (std_srvs/Empty) and lockstep/step_once (std_srvs/Trigger) in nh's namespace.
+  /// Advertises lockstep/step in nh's namespace, and, without a leader, /clock and the services
+  /// lockstep/pause, lockstep/resume (std_srvs/Empty) and lockstep/step_once (std_srvs/Trigger).
   /// @throw std::invalid_argument on a bad setting, or if /use_sim_time is false.
   LockstepClock(ros::NodeHandle nh, Settings settings, Tick tick, Ready ready);
 
@@ -55,7 +64,11 @@ class LockstepClock : public PlantClock {
   void poll(const ros::WallTimerEvent&);
   /// Runs the next step now or when the pace allows, unless paused.
   void schedule();
+  /// Steps to the next step time of its own, or to the leader's.
   void runStep();
+  void runStepAt(const ros::Time& t);
+  /// The step's last request was handed out: the next one, or the answer to the leader.
+  void endStep();
   /// Hands out the step's requests until one must be waited for.
   void pump();
   /// Ends the step once the messages the plant waits for are in.
@@ -91,6 +104,8 @@ class LockstepClock : public PlantClock {
   ros::WallTimer poll_timer_;
   ros::WallTimer pace_timer_;
   ros::WallTimer finish_timer_;
+  ros::NodeHandle leader_nh_;
+  std::unique_ptr<LockstepParticipant> leader_link_;  ///< with a leader, once time has started
 };
 
 }  // namespace spherical_robots

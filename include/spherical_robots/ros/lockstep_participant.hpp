@@ -11,12 +11,14 @@
 #include <ros/wall_timer.h>
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "spherical_robots/LockstepStep.h"
 #include "spherical_robots/core/lockstep_inputs.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 
 namespace spherical_robots {
 
@@ -28,6 +30,12 @@ bool isLockstepParticipant(const ros::NodeHandle& nh, const ros::NodeHandle& pnh
 /// <ns>/lockstep/participants resolved to node names, in order; empty if the parameter is unset.
 std::vector<std::string> lockstepParticipants(const ros::NodeHandle& nh);
 
+class LockstepParticipant;
+
+/// The time a node works at: the step its lock-step participant works at, or ROS time if it takes
+/// no part (nullptr).
+ros::Time workingTime(const LockstepParticipant* participant);
+
 class LockstepParticipant {
  public:
   /// What the work of one step did: the topics it published (each message stamped with the
@@ -36,7 +44,8 @@ class LockstepParticipant {
     std::vector<std::string> published;
     ros::Time next;
   };
-  using Work = std::function<Done(const ros::Time& now)>;
+  /// The work of one step; nullopt: the step goes on elsewhere, and answer() ends it later.
+  using Work = std::function<std::optional<Done>(const ros::Time& now)>;
 
   /// @param pnh the node's private handle: its namespace is the node's name, the participant's.
   /// @param subscriptions the topics the node reads (what a request may make it wait for).
@@ -49,6 +58,8 @@ class LockstepParticipant {
   /// A message stamped `stamp` arrived on `topic` (call from the subscription's callback, after
   /// the node took the message in).
   void received(const std::string& topic, const ros::Time& stamp);
+  /// Acknowledges the step whose work returned nullopt.
+  void answer(const Done& done);
   /// The time of the latest step worked at (zero before the first).
   const ros::Time& now() const { return now_; }
   unsigned long steps() const { return steps_; }
@@ -71,6 +82,54 @@ class LockstepParticipant {
   ros::Publisher ack_pub_;
   ros::Subscriber request_sub_;
   ros::WallTimer join_timer_;
+};
+
+/// A node that answers each message of one input at once (a relay, a message-driven
+/// controller), in either time: outside lock-step it handles a message when it arrives; as a
+/// listed participant it handles, at each step, the message stamped with the step's time if one
+/// came (whatever order the transport delivered it in), and acknowledges what that published.
+template <typename Message>
+class MessageDrivenWork {
+ public:
+  /// Handles one message, publishing through LoopPublishers of `publications`.
+  using Handle = std::function<void(const Message&)>;
+
+  MessageDrivenWork(Handle handle, StepPublications& publications)
+      : handle_(std::move(handle)), publications_(&publications) {}
+
+  /// Takes part in lock-step if the node (private handle pnh) is listed (call once the
+  /// subscriptions exist; the first is the input).
+  void join(ros::NodeHandle nh, const ros::NodeHandle& pnh,
+            std::vector<ros::Subscriber> subscriptions) {
+    if (!isLockstepParticipant(nh, pnh)) return;
+    participant_ = std::make_unique<LockstepParticipant>(
+        nh, pnh, std::move(subscriptions), [this](const ros::Time& now) {
+          LockstepParticipant::Done done;
+          if (latest_ && latest_->header.stamp == now) {
+            handle_(*latest_);
+            done.published = publications_->take();
+          }
+          return done;
+        });
+  }
+  /// From the input's callback.
+  void arrived(const Message& message, const std::string& topic) {
+    if (!participant_) {
+      handle_(message);
+      publications_->take();
+      return;
+    }
+    latest_ = message;
+    participant_->received(topic, message.header.stamp);
+  }
+  /// Null outside lock-step (another input's callback reports its messages to it).
+  LockstepParticipant* participant() const { return participant_.get(); }
+
+ private:
+  Handle handle_;
+  StepPublications* publications_;
+  std::optional<Message> latest_;
+  std::unique_ptr<LockstepParticipant> participant_;
 };
 
 }  // namespace spherical_robots

@@ -1,14 +1,21 @@
 #pragma once
-// Publications of the simulated loop deep enough for observers: in lock-step the stack runs as
+// Publications of the simulated loop. Deep enough for observers: in lock-step the stack runs as
 // fast as its participants answer, and an observer (a bag recorder, rviz) is not one, so when it
-// is descheduled the messages wait in the publisher's queue for it instead of being dropped.
+// is descheduled the messages wait in the publisher's queue for it instead of being dropped. And
+// counted: what a node published in a step is what lock-step tells the next participant to wait
+// for (docs/lockstep.md), so each publication notes its topic instead of a hand-kept list.
 
 #include <geometry_msgs/TransformStamped.h>
 #include <ros/node_handle.h>
 #include <ros/publisher.h>
 
 #include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
 #include <vector>
+
+#include "spherical_robots/ros/shared_message.hpp"
 
 namespace spherical_robots {
 
@@ -16,15 +23,55 @@ namespace spherical_robots {
 /// the fastest topic, 1 kHz, at a few times real time).
 constexpr std::uint32_t kLoopQueueSize = 5000;
 
-/// tf2_ros::TransformBroadcaster with kLoopQueueSize instead of its 100 on /tf.
-class TfPublisher {
+/// A publisher of a loop topic: each publish() notes the topic in its StepPublications.
+class LoopPublisher {
  public:
-  TfPublisher();
-  void sendTransform(const geometry_msgs::TransformStamped& transform);
-  void sendTransform(const std::vector<geometry_msgs::TransformStamped>& transforms);
+  LoopPublisher() = default;
+  LoopPublisher(ros::Publisher publisher, std::shared_ptr<std::vector<std::string>> published);
+
+  /// By shared pointer (shared_message.hpp): a nodelet in the same manager receives the message
+  /// itself, neither serialised nor copied.
+  template <typename Message>
+  void publish(Message&& message) const {
+    publisher_.publish(shared(std::forward<Message>(message)));
+    note();
+  }
+  /// The resolved topic.
+  std::string topic() const { return publisher_.getTopic(); }
+  const ros::Publisher& publisher() const { return publisher_; }
 
  private:
+  void note() const;
+
   ros::Publisher publisher_;
+  std::shared_ptr<std::vector<std::string>> published_;
+};
+
+/// The loop topics one node published since the last take(), each once.
+class StepPublications {
+ public:
+  /// Advertises `topic` (relative to nh) with kLoopQueueSize.
+  template <typename Message>
+  LoopPublisher advertise(ros::NodeHandle& nh, const std::string& topic) {
+    return {nh.advertise<Message>(topic, kLoopQueueSize), published_};
+  }
+  /// The resolved topics published since the last call, in order of first publication.
+  std::vector<std::string> take();
+
+ private:
+  std::shared_ptr<std::vector<std::string>> published_ =
+      std::make_shared<std::vector<std::string>>();
+};
+
+/// tf2_ros::TransformBroadcaster on a LoopPublisher of /tf (kLoopQueueSize instead of its 100).
+class TfPublisher {
+ public:
+  explicit TfPublisher(StepPublications& step);
+  void sendTransform(const geometry_msgs::TransformStamped& transform) const;
+  void sendTransform(const std::vector<geometry_msgs::TransformStamped>& transforms) const;
+
+ private:
+  LoopPublisher publisher_;
 };
 
 }  // namespace spherical_robots

@@ -15,6 +15,7 @@
 #include "spherical_robots/norma/norma_control_loop.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/lockstep_participant.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 
 namespace spherical_robots {
 
@@ -41,8 +42,8 @@ class NormaControllerRos {
 
  private:
   void onState(const spherical_robots::NormaState& msg);
-  /// Commands from one state; returns the topics it published (none for a rejected state).
-  std::vector<std::string> control(const spherical_robots::NormaState& msg);
+  /// Commands from one state (nothing for a rejected one).
+  void control(const spherical_robots::NormaState& msg);
   /// ROS time, or in lock-step the time of the latest step.
   ros::Time now() const;
   void onActuatorState(const sensor_msgs::JointState& msg);
@@ -60,12 +61,12 @@ class NormaControllerRos {
   InputMonitor actuator_input_;
   ros::Subscriber state_sub_;
   ros::Subscriber actuator_sub_;
-  /// In lock-step: the latest state, commanded from when its step's request comes.
-  std::unique_ptr<LockstepParticipant> lockstep_;
-  std::optional<spherical_robots::NormaState> latest_state_;
-  ros::Publisher command_pub_;
-  ros::Publisher error_pub_;
-  ros::Publisher target_pub_;
+  StepPublications step_publications_;
+  /// Commands each state when it comes, or in lock-step at the step it is stamped with.
+  MessageDrivenWork<spherical_robots::NormaState> work_;
+  LoopPublisher command_pub_;
+  LoopPublisher error_pub_;
+  LoopPublisher target_pub_;
   ros::Publisher desired_path_pub_;
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)

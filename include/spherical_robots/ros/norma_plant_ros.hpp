@@ -3,21 +3,11 @@
 // pendulum torque and slider force of the hardware interface, published as its state, odometry,
 // joint states and tf.
 
-#include <diagnostic_updater/diagnostic_updater.h>
-#include <nav_msgs/Path.h>
-#include <ros/ros.h>
-#include <sensor_msgs/JointState.h>
-
-#include <memory>
-#include <vector>
+#include <optional>
 #include <string>
 
 #include "spherical_robots/norma/norma_plant.hpp"
-#include "spherical_robots/ros/input_monitor.hpp"
-#include "spherical_robots/ros/trail.hpp"
-#include "spherical_robots/ros/plant_timeline.hpp"
-#include "spherical_robots/ros/loop_publishers.hpp"
-#include "spherical_robots/ros/plant_clock.hpp"
+#include "spherical_robots/ros/plant_loop.hpp"
 
 namespace spherical_robots {
 
@@ -31,39 +21,30 @@ namespace spherical_robots {
 /// norma_state (every tick), odom, joint_states (tilt_joint φ, shell_joint θ, pendulum_joint α,
 /// slider_joint δ of urdf/norma.urdf),
 /// tf world -> <prefix>base_link (centre, heading), trail and /diagnostics.
-class NormaPlantRos {
+class NormaPlantRos : private PlantModel {
  public:
   /// @throw std::invalid_argument on a bad parameter or URDF.
   NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh);
 
  private:
-  void onActuatorState(const sensor_msgs::JointState& msg);
-  /// One step at now; returns the topics it published.
-  std::vector<std::string> tick(const ros::Time& now);
-  void publishState(const ros::Time& now);
-  void publishPose(const ros::Time& now);
-  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+  void read(const sensor_msgs::JointState& actuators) override;
+  void advance(double elapsed, bool actuators_fresh) override;
+  void publishEveryStep(const ros::Time& now, bool actuators_fresh) override;
+  void publishPeriodic(const ros::Time& now, bool actuators_fresh) override;
+  std::optional<Pose> trailPose() const override;
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) override;
+  std::string describeState() const override;
 
   norma::NormaDynamics dynamics_;
   std::string base_frame_;
-  double step_;
-  PlantTimeline timeline_;
   double max_actuator_effort_;  ///< [N m or N] a measured effort beyond it is rejected
-  double publish_period_;
-  Trail trail_;
   norma::NormaState state_;
   double torque_ = 0.0;  ///< measured T [N m]
   double force_ = 0.0;   ///< measured F [N]
-  ros::Time last_publish_;
-  InputMonitor actuator_input_;
-  ros::Subscriber actuator_sub_;
-  ros::Publisher state_pub_;
-  ros::Publisher odom_pub_;
-  ros::Publisher joint_pub_;
-  TfPublisher tf_broadcaster_;
-  diagnostic_updater::Updater updater_;
-  ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
-  std::unique_ptr<PlantClock> clock_;  ///< last: it ticks only once everything else exists
+  LoopPublisher state_pub_;
+  LoopPublisher odom_pub_;
+  LoopPublisher joint_pub_;
+  PlantLoop loop_;  ///< last: its clock stops before the rest goes
 };
 
 }  // namespace spherical_robots

@@ -16,9 +16,6 @@
 
 namespace spherical_robots {
 
-class InputMonitor;
-class PlantClock;
-
 class PlantTimeline {
  public:
   /// @param duration [s] of ROS time after the first tick; 0 (or less): forever.
@@ -51,11 +48,5 @@ class PlantTimeline {
   unsigned long failures_at_last_report_ = 0;
   bool finished_ = false;
 };
-
-/// What every plant's diagnostics add after its own figures: clock.report() (mode, real-time
-/// factor, lock-step participants), then timeline.report() and actuators.report(), each of which
-/// may raise the status to ERROR or WARN.
-void reportPlantHealth(diagnostic_updater::DiagnosticStatusWrapper& status, const ros::Time& now,
-                       PlantClock& clock, PlantTimeline& timeline, InputMonitor& actuators);
 
 }  // namespace spherical_robots

@@ -20,6 +20,7 @@
 #include "spherical_robots/terrain/surface.hpp"
 
 #include "spherical_robots/ros/lockstep_participant.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 #include "spherical_robots/ros/timer_jump_guard.hpp"
 
 namespace spherical_robots {
@@ -94,9 +95,10 @@ class PurePursuitRos {
   ros::WallTime last_cmd_vel_wall_;  ///< arrival of the last good cmd_vel
   ros::Subscriber state_sub_;
   ros::Subscriber cmd_vel_sub_;
-  ros::Publisher command_pub_;
-  ros::Publisher error_pub_;
-  ros::Publisher target_pub_;
+  StepPublications step_publications_;
+  LoopPublisher command_pub_;
+  LoopPublisher error_pub_;
+  LoopPublisher target_pub_;
   ros::Publisher desired_path_pub_;
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)

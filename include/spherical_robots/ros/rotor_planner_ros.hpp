@@ -17,6 +17,8 @@
 #include "spherical_robots/PlanRotorMotion.h"
 #include "spherical_robots/core/clock_jump.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/lockstep_participant.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 #include "spherical_robots/ros/trail.hpp"
 #include "spherical_robots/rotor/figure_eight.hpp"
 #include "spherical_robots/rotor/manoeuvre_correction.hpp"
@@ -100,6 +102,8 @@ class RotorPlannerRos {
   void refuse(const std::string& problem);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
   void onCommandTimer(const ros::TimerEvent& event);
+  /// The set-point of the manoeuvre in progress at now, and what follows its end.
+  void command(const ros::Time& now);
   void onOdometry(const nav_msgs::Odometry& msg);
 
   ros::NodeHandle nh_;
@@ -153,11 +157,13 @@ class RotorPlannerRos {
   diagnostic_updater::Updater updater_;
   ros::Subscriber execute_sub_;
   ros::Subscriber odom_sub_;
-  ros::Publisher command_pub_;
+  StepPublications step_publications_;
+  LoopPublisher command_pub_;
   Trail driven_;  ///< driven_path, latched
   ros::Publisher done_pub_;
   ros::Timer command_timer_;
   std::unique_ptr<TimerJumpGuard> timer_guard_;  ///< restarts command_timer_ after a jump
+  std::unique_ptr<LockstepParticipant> lockstep_;  ///< in lock-step, instead of the timer
   ros::WallTimer diagnostics_timer_;
 };
 

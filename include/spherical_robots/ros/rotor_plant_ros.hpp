@@ -3,18 +3,10 @@
 // speeds of the hardware interface (eq 11 solved for ω, eqs 6-10; rotor::advancePlant), published
 // as odometry, tf and the rotors' joint states.
 
-#include <diagnostic_updater/diagnostic_updater.h>
-#include <ros/ros.h>
-#include <sensor_msgs/JointState.h>
-
-#include <memory>
-#include <vector>
+#include <array>
 #include <string>
 
-#include "spherical_robots/ros/input_monitor.hpp"
-#include "spherical_robots/ros/plant_timeline.hpp"
-#include "spherical_robots/ros/loop_publishers.hpp"
-#include "spherical_robots/ros/plant_clock.hpp"
+#include "spherical_robots/ros/plant_loop.hpp"
 #include "spherical_robots/rotor/contact_kinematics.hpp"
 #include "spherical_robots/rotor/dynamic_realizability.hpp"
 
@@ -33,38 +25,29 @@ namespace spherical_robots {
 /// the centre (R u_a, R v_a, R) and orientation R_zᵀ(ψ) R_xᵀ(v_o) R_yᵀ(u_o) of eq 2), tf
 /// world -> <prefix>base_link, joint_states (rotor_1, rotor_2: measured positions and velocities)
 /// and /diagnostics. Starts at the zero state (contact at the south pole, at the origin, ψ = 0).
-class RotorPlantRos {
+class RotorPlantRos : private PlantModel {
  public:
   /// @throw std::invalid_argument on a bad parameter.
   RotorPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh);
 
  private:
-  void onActuatorState(const sensor_msgs::JointState& msg);
-  /// One step at now; returns the topics it published.
-  std::vector<std::string> tick(const ros::Time& now);
-  void publishPose(const ros::Time& now);
-  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+  void read(const sensor_msgs::JointState& actuators) override;
+  void advance(double elapsed, bool actuators_fresh) override;
+  void publishPeriodic(const ros::Time& now, bool actuators_fresh) override;
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) override;
+  std::string describeState() const override;
 
   double k_;
   double inertia_scale_;
   double radius_;
   std::string base_frame_;
-  double step_;
-  PlantTimeline timeline_;
   double max_actuator_rate_;  ///< [rad/s] a measured rate beyond it is rejected (plausibility)
-  double publish_period_;
   rotor::ContactCoordinates state_;
   rotor::RotorSpeeds speeds_;  ///< measured [rad/s]
-  double positions_[2] = {0.0, 0.0};  ///< measured rotor angles [rad]
-  ros::Time last_publish_;
-  InputMonitor actuator_input_;
-  ros::Subscriber actuator_sub_;
-  ros::Publisher odom_pub_;
-  ros::Publisher joint_pub_;
-  TfPublisher tf_broadcaster_;
-  diagnostic_updater::Updater updater_;
-  ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
-  std::unique_ptr<PlantClock> clock_;  ///< last: it ticks only once everything else exists
+  std::array<double, 2> positions_{};  ///< measured rotor angles [rad], for the URDF joints
+  LoopPublisher odom_pub_;
+  LoopPublisher joint_pub_;
+  PlantLoop loop_;  ///< last: its clock stops before the rest goes
 };
 
 }  // namespace spherical_robots

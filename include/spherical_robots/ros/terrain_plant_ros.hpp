@@ -2,21 +2,12 @@
 // The terrain plant node: a sphere rolling over z = f(x, y), integrated from the measured
 // actuator rates (terrain::stepWithHeldRates) and published as odometry, tf, state and trail.
 
-#include <diagnostic_updater/diagnostic_updater.h>
-#include <nav_msgs/Path.h>
-#include <ros/ros.h>
-#include <sensor_msgs/JointState.h>
-
 #include <Eigen/Geometry>
 #include <memory>
-#include <vector>
+#include <optional>
 #include <string>
 
-#include "spherical_robots/ros/input_monitor.hpp"
-#include "spherical_robots/ros/trail.hpp"
-#include "spherical_robots/ros/plant_timeline.hpp"
-#include "spherical_robots/ros/loop_publishers.hpp"
-#include "spherical_robots/ros/plant_clock.hpp"
+#include "spherical_robots/ros/plant_loop.hpp"
 #include "spherical_robots/terrain/surface.hpp"
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
 
@@ -43,46 +34,34 @@ namespace spherical_robots {
 /// Subscribes actuators/state (sensor_msgs/JointState, measured rates). Publishes odom, tf
 /// world -> <prefix>base_link (centre, shell orientation) and world -> <prefix>heading (contact
 /// point, R_L), terrain_state, trail, terrain_marker (latched) and /diagnostics.
-class TerrainPlantRos {
+class TerrainPlantRos : private PlantModel {
  public:
   /// @throw std::invalid_argument on a bad parameter, URDF or terrain configuration.
   TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh);
 
  private:
-  void onActuatorState(const sensor_msgs::JointState& msg);
-  /// One step at now; returns the topics it published.
-  std::vector<std::string> tick(const ros::Time& now);
-  /// Advances state_ and orientation_ by elapsed [s] in steps no longer than step_.
-  void integrate(double elapsed, const terrain::DriveRates& rates);
-  void publishState(const ros::Time& now, const terrain::DriveRates& rates);
-  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+  void read(const sensor_msgs::JointState& actuators) override;
+  void advance(double elapsed, bool actuators_fresh) override;
+  void publishPeriodic(const ros::Time& now, bool actuators_fresh) override;
+  std::optional<Pose> trailPose() const override;
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) override;
+  std::string describeState() const override;
+
+  terrain::DriveRates rates(bool actuators_fresh) const;
 
   terrain::RobotType type_;
   std::string base_frame_;
   std::string heading_frame_;
-  double step_;
-  PlantTimeline timeline_;
-  double publish_period_;
-  Trail trail_;
-
   std::unique_ptr<terrain::Surface> surface_;
   std::unique_ptr<terrain::TerrainKinematics> kinematics_;
   terrain::TerrainState state_;
   Eigen::Quaterniond orientation_;  ///< shell (base_link) orientation, world <- body
   terrain::DriveRates measured_;
   double max_actuator_rate_;
-
-  ros::Time last_publish_;
-
-  InputMonitor actuator_input_;
-  ros::Subscriber actuator_sub_;
-  ros::Publisher odom_pub_;
-  ros::Publisher state_pub_;
   ros::Publisher marker_pub_;
-  TfPublisher tf_broadcaster_;
-  diagnostic_updater::Updater updater_;
-  ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
-  std::unique_ptr<PlantClock> clock_;  ///< last: it ticks only once everything else exists
+  LoopPublisher odom_pub_;
+  LoopPublisher state_pub_;
+  PlantLoop loop_;  ///< last: its clock stops before the rest goes
 };
 
 }  // namespace spherical_robots

@@ -46,6 +46,7 @@ class PurePursuitController final : public PursuitController {
   DriveRates command(const ContactGeometry& geometry, double tilt, const TrackingError& error,
                      const Eigen::Vector3d& desired_velocity) const override;
   VelocityWindow velocityWindow() const override { return {}; }
+  bool readsZeta() const override { return true; }
 
   RobotType type() const override { return type_; }
   const PursuitGains& gains() const { return gains_; }

@@ -31,7 +31,11 @@ struct TrackingError {
   double zeta = 0.0;
 };
 
-TrackingError trackingError(const ContactGeometry& geometry, const Eigen::Vector3d& desired);
+/// e_t, |e_t| and, if with_zeta, zeta (otherwise left 0: its atan2 is a fifth of a closed-loop
+/// stage, wasted on a law that does not read it, PursuitController::readsZeta).
+/// @throw std::invalid_argument on a non-finite desired point.
+TrackingError trackingError(const ContactGeometry& geometry, const Eigen::Vector3d& desired,
+                            bool with_zeta = true);
 
 /// A tracking law for one robot type. Stateless: the command is a function of the robot's state
 /// and the reference at one instant, so the batch run can evaluate it at every RK stage.
@@ -43,6 +47,10 @@ class PursuitController {
 
   /// Which of the reference's velocities the law's feed-forward takes (liftOntoSurface).
   virtual VelocityWindow velocityWindow() const = 0;
+
+  /// Whether command() reads TrackingError::zeta; if not, the batch run's RK stages leave it
+  /// uncomputed.
+  virtual bool readsZeta() const = 0;
 
   /// Drive-rate set-points [rad/s].
   /// @param geometry the robot's contact geometry; @param tilt the RS tilt phi [rad] (0 for the

@@ -54,6 +54,7 @@ class SmoothPursuitController final : public PursuitController {
 
   RobotType type() const override { return type_; }
   VelocityWindow velocityWindow() const override { return {gains_.lead, gains_.window}; }
+  bool readsZeta() const override { return false; }
   const SmoothPursuitGains& gains() const { return gains_; }
 
   /// The desired velocity u = w + c [m/s], before projection: c = v_c k / (v_c + |k|) with
@@ -67,7 +68,9 @@ class SmoothPursuitController final : public PursuitController {
  private:
   RobotType type_;
   SmoothPursuitGains gains_;
-  double radius_;
+  // Constants of command(), which runs at every RK stage: a multiplication, not a division or sin.
+  double inverse_radius_;  ///< 1 / R [1/m]
+  double max_tilt_sine_;  ///< sin(max_tilt)
 };
 
 }  // namespace spherical_robots::terrain

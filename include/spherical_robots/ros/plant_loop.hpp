@@ -1,0 +1,108 @@
+#pragma once
+// The loop every plant node runs (terrain, Norma, rotor sphere, FreeBOT chain), written once: as
+// ros_control's loop calls read/update/write on a robot-specific object, PlantLoop owns the clock
+// mode, the timeline, the actuator input, the publication period, tf, the trail, diagnostics and
+// completion, and calls a PlantModel, which keeps only its model and its messages.
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
+
+#include <Eigen/Geometry>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
+#include "spherical_robots/ros/plant_clock.hpp"
+#include "spherical_robots/ros/plant_timeline.hpp"
+#include "spherical_robots/ros/trail.hpp"
+
+namespace spherical_robots {
+
+/// What a plant node implements; PlantLoop calls it, always from the node's callback thread.
+class PlantModel {
+ public:
+  struct Pose {
+    Eigen::Vector3d position;
+    Eigen::Quaterniond orientation;
+  };
+
+  virtual ~PlantModel() = default;
+  /// Takes in a measured actuator state. @throw std::invalid_argument if it cannot be trusted
+  /// (the loop rejects it, keeps the last good one and reports it).
+  virtual void read(const sensor_msgs::JointState& actuators) = 0;
+  /// Advances the model by elapsed [s] > 0, driven by the last measured actuator state, or at rest
+  /// if it is stale (actuators_fresh false). @throw on a failed step (also when it would produce
+  /// a non-finite state): the loop keeps the last good state and counts the failure.
+  virtual void advance(double elapsed, bool actuators_fresh) = 0;
+  /// Publishes what goes out at every step, stamped now (default: nothing).
+  virtual void publishEveryStep(const ros::Time& /*now*/, bool /*actuators_fresh*/) {}
+  /// Publishes what goes out at publish_rate, stamped now.
+  virtual void publishPeriodic(const ros::Time& now, bool actuators_fresh) = 0;
+  /// The pose the trail follows; none: the plant has no trail.
+  virtual std::optional<Pose> trailPose() const { return std::nullopt; }
+  /// Sets the summary and adds the model's own figures (the loop adds its own after them).
+  virtual void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) = 0;
+  /// Where the model ended, for the "scenario complete" log line (e.g. "centre at (1, 2) m").
+  virtual std::string describeState() const = 0;
+};
+
+class PlantLoop {
+ public:
+  /// Per plant defaults of the loop's parameters.
+  struct Defaults {
+    std::string task;         ///< the diagnostics task, e.g. "norma plant"
+    std::string hardware_id;  ///< e.g. "Norma"
+    double step;       ///< [s] the tick and the integration step
+    double pace;       ///< speedup of the free clock
+    double state_timeout;  ///< [s]
+    double trail_period = 0.0;  ///< [s]; 0: the plant has no trail
+    std::size_t max_trail_points = 0;
+  };
+
+  /// Reads the private parameters (pnh): step [s], publish_rate [Hz] (50): what
+  /// publishPeriodic() sends; state_timeout [s]: older actuator states count as stale; trail_period
+  /// [s]; duration [s] (0 = forever) and max_clock_step [s] (5) (PlantTimeline); clock, speedup,
+  /// lockstep_timeout, wait_for_subscribers, start_timeout (makePlantClock). Nothing runs before
+  /// start(). @throw std::invalid_argument on a bad parameter, naming it.
+  PlantLoop(ros::NodeHandle nh, ros::NodeHandle pnh, const Defaults& defaults);
+
+  /// A loop topic (relative to the node handle) whose publications lock-step passes on.
+  template <typename Message>
+  LoopPublisher advertise(const std::string& topic) {
+    return step_publications_.advertise<Message>(nh_, topic);
+  }
+  const TfPublisher& tf() const { return tf_; }
+  double step() const { return step_; }
+  /// Subscribes actuators/state (relative to the node handle), adds the model's diagnostics and
+  /// starts the clock; `state` is the topic whose subscribers time waits for (wait_for_subscribers).
+  void start(PlantModel& model, const LoopPublisher& state);
+
+ private:
+  void onActuatorState(const sensor_msgs::JointState& msg);
+  std::vector<std::string> tick(const ros::Time& now);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  ros::NodeHandle nh_;
+  ros::NodeHandle pnh_;
+  Defaults defaults_;
+  double step_;
+  double publish_period_;
+  PlantTimeline timeline_;
+  InputMonitor actuator_input_;
+  StepPublications step_publications_;
+  TfPublisher tf_;
+  std::optional<Trail> trail_;
+  ros::Time last_publish_;
+  PlantModel* model_ = nullptr;
+  ros::Subscriber actuator_sub_;
+  diagnostic_updater::Updater updater_;
+  ros::WallTimer diagnostics_timer_;   ///< reports on wall time (diagnostics_timer.hpp)
+  std::unique_ptr<PlantClock> clock_;  ///< made last: it ticks only once everything else exists
+};
+
+}  // namespace spherical_robots

@@ -1,0 +1,79 @@
+#include "spherical_robots/ros/plant_loop.hpp"
+
+#include <stdexcept>
+
+#include "spherical_robots/ros/diagnostics_timer.hpp"
+#include "spherical_robots/ros/ros_parameter_source.hpp"
+
+namespace spherical_robots {
+
+PlantLoop::PlantLoop(ros::NodeHandle nh, ros::NodeHandle pnh, const Defaults& defaults)
+    : nh_(nh),
+      pnh_(pnh),
+      defaults_(defaults),
+      step_(positiveParam(pnh, "step", defaults.step)),
+      publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
+      timeline_(pnh),
+      actuator_input_(nh.resolveName("actuators/state"),
+                      positiveParam(pnh, "state_timeout", defaults.state_timeout)),
+      tf_(step_publications_),
+      updater_(nh, pnh, pnh.getNamespace()) {
+  if (defaults.trail_period > 0.0)
+    trail_.emplace(nh, "trail", kWorldFrame,
+                   positiveParam(pnh, "trail_period", defaults.trail_period),
+                   defaults.max_trail_points);
+}
+
+void PlantLoop::start(PlantModel& model, const LoopPublisher& state) {
+  model_ = &model;
+  actuator_sub_ = nh_.subscribe("actuators/state", 10, &PlantLoop::onActuatorState, this);
+  clock_ = makePlantClock(nh_, pnh_, step_, defaults_.pace,
+                          [this](const ros::Time& now) { return tick(now); }, state.publisher(),
+                          actuator_sub_);
+  updater_.setHardwareID(defaults_.hardware_id);
+  updater_.add(defaults_.task, this, &PlantLoop::diagnose);
+  diagnostics_timer_ = startDiagnostics(nh_, updater_);
+}
+
+void PlantLoop::onActuatorState(const sensor_msgs::JointState& msg) {
+  // In a nodelet manager a message may come while start() is still making the clock.
+  if (!clock_) return;
+  try {
+    model_->read(msg);
+    actuator_input_.accept(clock_->now());
+  } catch (const std::invalid_argument& e) {
+    actuator_input_.reject(e.what());
+  }
+  clock_->received(actuator_sub_.getTopic(), msg.header.stamp);
+}
+
+std::vector<std::string> PlantLoop::tick(const ros::Time& now) {
+  if (timeline_.finished()) return {};
+  const bool fresh = actuator_input_.fresh(now);
+  timeline_.tick(now, [&](double elapsed) { model_->advance(elapsed, fresh); });
+  model_->publishEveryStep(now, fresh);
+  if (periodDue(last_publish_, now, publish_period_)) {
+    last_publish_ = now;
+    model_->publishPeriodic(now, fresh);
+  }
+  if (trail_ && trail_->due(now)) {
+    if (const std::optional<PlantModel::Pose> pose = model_->trailPose())
+      trail_->add(now, pose->position, pose->orientation);
+  }
+  if (timeline_.complete(now)) {
+    ROS_INFO_STREAM("scenario complete after " << timeline_.duration() << " s, "
+                                               << model_->describeState());
+    clock_->finish();
+  }
+  return step_publications_.take();
+}
+
+void PlantLoop::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  model_->diagnose(status);
+  const ros::Time now = clock_->now();
+  clock_->report(status);
+  timeline_.report(status, now);
+  actuator_input_.report(status, now);
+}
+
+}  // namespace spherical_robots
