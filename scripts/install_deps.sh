@@ -12,6 +12,8 @@ packages=(
   ros-base-dev libtf2-ros-dev libtf2-msgs-dev
   libnav-msgs-dev libvisualization-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev
   libdiagnostic-msgs-dev libstd-msgs-dev libstd-srvs-dev libdiagnostic-updater-dev
+  # every node as a nodelet: the library, pluginlib, and the `nodelet` manager and loader
+  libnodeletlib-dev pluginlib-dev libnodeletlib-tools
   # core libraries (liburdfdom-dev: urdf_parser/urdf_parser.h, linked directly; no ROS urdf)
   libeigen3-dev liburdfdom-dev libboost-dev libyaml-cpp-dev
   # tests and benchmarks

@@ -1,12 +1,15 @@
 #!/usr/bin/env python3
 """Runs one stack twice in lock-step, one run after the other, each on its own ROS master and
 recorded to a bag, and asserts that the two runs published the same messages, value for value
-(docs/lockstep.md, "Repeatable"). The second run can have busy loops hogging the CPU beside it.
-The bags must also hold every message the loop publishes: as many as the step count says.
+(docs/lockstep.md, "Repeatable"). The second run can have busy loops hogging the CPU beside it,
+and launch arguments of its own: with nodelet:=true it checks that the stack as nodelets
+publishes what it publishes as processes. The bags must also hold every message the loop
+publishes: as many as the step count says.
 
-As a rostest node (test/lockstep_repeat_terrain.test) the parameters are private (~stack,
-~duration, ~busy_loops, ~args); from a shell:
-    lockstep_repeat_check.py --stack terrain --duration 20 --busy-loops 2 [-- launch args]
+As a rostest node (test/lockstep_nodelet_terrain.test) the parameters are private (~stack,
+~duration, ~busy_loops, ~args, ~second_args); from a shell:
+    lockstep_repeat_check.py --stack terrain --duration 20 --busy-loops 2 \
+        [--second-args nodelet:=true] [-- launch args]
 """
 import argparse
 import io
@@ -19,6 +22,7 @@ import tempfile
 import unittest
 
 import rosbag
+import rospkg
 
 PKG = 'spherical_robots'
 
@@ -41,20 +45,30 @@ def free_port():
         return s.getsockname()[1]
 
 
+def launch_file(stack):
+    """The stack's launch file by its full path, as $(find) resolves it. `roslaunch PKG FILE`
+    searches the whole package directory, and when the package's path is its source tree with the
+    colcon workspace inside it (under colcon test) it finds the installed copy too and refuses:
+    "multiple files named [terrain_stack.launch]"."""
+    return os.path.join(rospkg.RosPack().get_path(PKG), 'launch', '%s_stack.launch' % stack)
+
+
 def run_stack(stack, duration, extra_args, bag, busy_loops):
     port = free_port()
     env = dict(os.environ, ROS_MASTER_URI='http://localhost:%d' % port)
     env['ROS_HOME'] = os.path.dirname(bag)
     busy = [subprocess.Popen(['yes'], stdout=subprocess.DEVNULL) for _ in range(busy_loops)]
     try:
-        command = ['roslaunch', '-p', str(port), PKG, '%s_stack.launch' % stack,
+        command = ['roslaunch', '-p', str(port), launch_file(stack),
                    'duration:=%g' % duration, 'record:=%s' % bag] + extra_args
-        log = open(bag + '.log', 'w')
-        child = subprocess.run(command, env=env, stdout=log, stderr=subprocess.STDOUT,
-                               timeout=60 + 20 * duration)
+        with open(bag + '.log', 'w') as log:
+            child = subprocess.run(command, env=env, stdout=log, stderr=subprocess.STDOUT,
+                                   timeout=60 + 20 * duration)
         if child.returncode != 0:
-            raise AssertionError('%s failed with %d (log %s)' % (' '.join(command), child.returncode,
-                                                                 bag + '.log'))
+            with open(bag + '.log') as log:
+                tail = log.readlines()[-20:]
+            raise AssertionError('%s failed with %d; the end of its log %s:\n%s'
+                                 % (' '.join(command), child.returncode, bag + '.log', ''.join(tail)))
     finally:
         for b in busy:
             b.kill()
@@ -92,12 +106,12 @@ def transforms(bag_path, prefix):
     return out
 
 
-def compare(stack, duration, extra_args, busy_loops, workdir):
+def compare(stack, duration, extra_args, busy_loops, workdir, second_args=()):
     ns, topics, (count_topic, rate), lossless = STACKS[stack]
     names = ['/%s/%s' % (ns, t) for t in topics]
     bags = [os.path.join(workdir, 'run%d.bag' % i) for i in (1, 2)]
     run_stack(stack, duration, extra_args, bags[0], 0)
-    run_stack(stack, duration, extra_args, bags[1], busy_loops)
+    run_stack(stack, duration, extra_args + list(second_args), bags[1], busy_loops)
     first, second = (messages(b, names) for b in bags)
     report = []
     for name in names:
@@ -132,8 +146,9 @@ class LockstepRepeatability(unittest.TestCase):
         duration = float(rospy.get_param('~duration', 20.0))
         busy_loops = int(rospy.get_param('~busy_loops', 2))
         extra_args = str(rospy.get_param('~args', '')).split()
+        second_args = str(rospy.get_param('~second_args', '')).split()
         workdir = tempfile.mkdtemp(prefix='lockstep_repeat.')
-        print(compare(stack, duration, extra_args, busy_loops, workdir))
+        print(compare(stack, duration, extra_args, busy_loops, workdir, second_args))
         shutil.rmtree(workdir, ignore_errors=True)
 
 
@@ -146,11 +161,14 @@ def main():
     parser.add_argument('--stack', choices=sorted(STACKS), default='terrain')
     parser.add_argument('--duration', type=float, default=20.0)
     parser.add_argument('--busy-loops', type=int, default=2)
+    parser.add_argument('--second-args', nargs='+', default=[], metavar='ARG',
+                        help='launch arguments of the second run only, e.g. nodelet:=true')
     parser.add_argument('args', nargs='*', help='launch arguments, e.g. robot:=RS path:=diamond')
     options = parser.parse_args()
     workdir = tempfile.mkdtemp(prefix='lockstep_repeat.')
     try:
-        print(compare(options.stack, options.duration, options.args, options.busy_loops, workdir))
+        print(compare(options.stack, options.duration, options.args, options.busy_loops, workdir,
+                      options.second_args))
         print('repeatable: the two runs published the same messages')
     except AssertionError as e:
         sys.exit('NOT repeatable: %s (bags in %s)' % (e, workdir))

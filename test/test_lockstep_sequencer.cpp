@@ -105,6 +105,21 @@ TEST(LockstepSequencer, ForgedRepeatedAndOutOfOrderAcknowledgementsDoNotMoveTheB
   EXPECT_EQ(*sequencer.awaited(), kHardware);
 }
 
+TEST(LockstepSequencer, NodeletsInThePlantsManagerSpeakWithTheManagersCallerId) {
+  const std::string manager = "/sphere/nodelet_manager";
+  LockstepSequencer sequencer(manager, {kController, kHardware}, 2.0);
+  EXPECT_TRUE(sequencer.sentBy(manager, kController));
+  EXPECT_FALSE(sequencer.sentBy("/sphere/other_manager", kController));
+  EXPECT_TRUE(sequencer.sentBy(kHardware, kHardware)) << "a participant in a process of its own";
+  sequencer.join(kController);
+  sequencer.join(kHardware);
+  sequencer.beginStep(kStep, {}, 0.0);
+  ASSERT_EQ(sequencer.nextRequest(0.0)->participant, kController);
+  EXPECT_EQ(sequencer.acknowledge("/intruder", kController, kStep, {}, 0), AckOutcome::kForged);
+  EXPECT_EQ(sequencer.acknowledge(manager, kController, kStep, {}, 0), AckOutcome::kAccepted);
+  EXPECT_EQ(sequencer.nextRequest(0.0)->participant, kHardware);
+}
+
 TEST(LockstepSequencer, DropsASilentParticipantAfterTheTimeoutAndTakesItBackWhenItRejoins) {
   LockstepSequencer sequencer = terrainLoop();
   sequencer.beginStep(kStep, {}, 100.0);

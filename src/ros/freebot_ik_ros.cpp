@@ -53,7 +53,7 @@ FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       state_input_(nh.resolveName("freebot_state"), positiveParam(pnh, "input_timeout", 0.1)),
       goal_input_(nh.resolveName("goal"), 1e9),
       work_([this](const spherical_robots::FreebotState& msg) { drive(msg); }, step_publications_),
-      updater_(nh, pnh) {
+      updater_(nh, pnh, pnh.getNamespace()) {
   ik_options_.position_tolerance =
       positiveParam(pnh, "ik/position_tolerance", ik_options_.position_tolerance);
   ik_options_.orientation_tolerance =
@@ -71,7 +71,7 @@ FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   result_pub_ = nh.advertise<spherical_robots::FreebotGoalResult>("goal_result", 10, true);
   target_pub_ = nh.advertise<geometry_msgs::PoseStamped>("ik_target", 1, true);
   state_sub_ = nh.subscribe("freebot_state", 10, &FreebotIkRos::onState, this);
-  work_.join(nh, {state_sub_});
+  work_.join(nh, pnh, {state_sub_});
   goal_sub_ = nh.subscribe("goal", 10, &FreebotIkRos::onGoal, this);
   solve_server_ = nh.advertiseService("solve_ik", &FreebotIkRos::onSolve, this);
   updater_.setHardwareID("FreeBOT");

@@ -58,10 +58,10 @@ FrictionDriveControllerRos::FrictionDriveControllerRos(ros::NodeHandle nh, ros::
       max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
       input_(nh.resolveName("drive/command"), positiveParam(pnh, "input_timeout", 0.5)),
       work_([this](const sensor_msgs::JointState& msg) { convert(msg); }, step_publications_),
-      updater_(nh, pnh) {
+      updater_(nh, pnh, pnh.getNamespace()) {
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
   command_sub_ = nh.subscribe("drive/command", 10, &FrictionDriveControllerRos::onDriveCommand, this);
-  work_.join(nh, {command_sub_});
+  work_.join(nh, pnh, {command_sub_});
   updater_.setHardwareID("friction drive");
   updater_.add("friction drive inverse", this, &FrictionDriveControllerRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
@@ -101,12 +101,12 @@ FrictionDriveSimRos::FrictionDriveSimRos(ros::NodeHandle nh, ros::NodeHandle pnh
       max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
       input_(nh.resolveName("actuators/state"), positiveParam(pnh, "input_timeout", 0.5)),
       work_([this](const sensor_msgs::JointState& msg) { drive(msg); }, step_publications_),
-      updater_(nh, pnh) {
+      updater_(nh, pnh, pnh.getNamespace()) {
   drive_state_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "drive/state");
   drive_pub_ = step_publications_.advertise<spherical_robots::RollerDrive>(nh, "roller_drive");
   marker_pub_ = step_publications_.advertise<visualization_msgs::MarkerArray>(nh, "roller_markers");
   state_sub_ = nh.subscribe("actuators/state", 10, &FrictionDriveSimRos::onActuatorState, this);
-  work_.join(nh, {state_sub_});
+  work_.join(nh, pnh, {state_sub_});
   updater_.setHardwareID("friction drive");
   updater_.add("friction drive forward", this, &FrictionDriveSimRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "spherical_robots/ros/ros_parameter_source.hpp"
+#include "spherical_robots/ros/shared_message.hpp"
 
 namespace spherical_robots {
 
@@ -191,7 +192,7 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
       command_input_(nh.resolveName("actuators/command"), actuators_.commandTimeout()),
       clock_(positiveParam(pnh, "max_clock_step", kDefaultMaxClockStep)),
       max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
-      updater_(nh, pnh) {
+      updater_(nh, pnh, pnh.getNamespace()) {
   const double rate = positiveParam(pnh, "rate", 100.0);
   state_msg_.name = actuators_.names();
 
@@ -203,9 +204,9 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
   command_sub_ =
       nh.subscribe("actuators/command", 10, &HardwareInterfaceSimRos::commandCallback, this);
   e_stop_sub_ = nh.subscribe("estop", 10, &HardwareInterfaceSimRos::eStopCallback, this);
-  if (isLockstepParticipant(nh)) {
+  if (isLockstepParticipant(nh, pnh)) {
     lockstep_ = std::make_unique<LockstepParticipant>(
-        nh, std::vector<ros::Subscriber>{command_sub_}, [this, rate](const ros::Time& now) {
+        nh, pnh, std::vector<ros::Subscriber>{command_sub_}, [this, rate](const ros::Time& now) {
           update(now);
           return LockstepParticipant::Done{{state_pub_.getTopic()}, now + ros::Duration(1.0 / rate)};
         });
@@ -307,7 +308,7 @@ void HardwareInterfaceSimRos::publishState(const ros::Time& stamp) {
   state_msg_.position = actuators_.measuredPositions();
   state_msg_.velocity = actuators_.measuredVelocities();
   state_msg_.effort = actuators_.efforts();
-  state_pub_.publish(state_msg_);
+  state_pub_.publish(shared(state_msg_));
 }
 
 void HardwareInterfaceSimRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

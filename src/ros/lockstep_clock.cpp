@@ -94,7 +94,7 @@ void LockstepClock::onAck(const ros::MessageEvent<spherical_robots::LockstepAck 
   const spherical_robots::LockstepAck& ack = *event.getConstMessage();
   const std::string& sender = event.getPublisherName();
   if (ack.stamp.isZero()) {
-    if (sender != ack.participant) {
+    if (!sequencer_.sentBy(sender, ack.participant)) {
       ++forged_;
       ROS_WARN_STREAM_THROTTLE(1.0, "lock-step: ignoring a join request for " << ack.participant
                                                                               << " sent by " << sender);
@@ -132,7 +132,7 @@ void LockstepClock::poll(const ros::WallTimerEvent&) {
     } else {
       // Asked to join only now, so the leader never waits for a stack that cannot answer yet.
       leader_link_ = std::make_unique<LockstepParticipant>(
-          leader_nh_, std::vector<ros::Subscriber>{},
+          leader_nh_, ros::NodeHandle(settings_.name), std::vector<ros::Subscriber>{},
           [this](const ros::Time& t) -> std::optional<LockstepParticipant::Done> {
             runStepAt(t);
             return std::nullopt;

@@ -1,13 +1,13 @@
 #include "spherical_robots/ros/lockstep_participant.hpp"
 
 #include <ros/console.h>
-#include <ros/this_node.h>
 
 #include <algorithm>
 #include <stdexcept>
 #include <utility>
 
 #include "spherical_robots/LockstepAck.h"
+#include "spherical_robots/ros/shared_message.hpp"
 
 namespace spherical_robots {
 namespace {
@@ -43,14 +43,15 @@ ros::Time workingTime(const LockstepParticipant* participant) {
   return participant ? participant->now() : ros::Time::now();
 }
 
-bool isLockstepParticipant(const ros::NodeHandle& nh) {
+bool isLockstepParticipant(const ros::NodeHandle& nh, const ros::NodeHandle& pnh) {
   const std::vector<std::string> names = lockstepParticipants(nh);
-  return std::find(names.begin(), names.end(), ros::this_node::getName()) != names.end();
+  return std::find(names.begin(), names.end(), pnh.getNamespace()) != names.end();
 }
 
-LockstepParticipant::LockstepParticipant(ros::NodeHandle nh, std::vector<ros::Subscriber> subscriptions,
-                                         Work work, double rejoin_after)
-    : name_(ros::this_node::getName()), subscriptions_(std::move(subscriptions)),
+LockstepParticipant::LockstepParticipant(ros::NodeHandle nh, const ros::NodeHandle& pnh,
+                                         std::vector<ros::Subscriber> subscriptions, Work work,
+                                         double rejoin_after)
+    : name_(pnh.getNamespace()), subscriptions_(std::move(subscriptions)),
       inputs_(topicsOf(subscriptions_)), work_(std::move(work)), rejoin_after_(rejoin_after) {
   // Queues long enough that no request or acknowledgement is lost while a node is descheduled.
   ack_pub_ = nh.advertise<spherical_robots::LockstepAck>("lockstep/ack", 100);
@@ -115,7 +116,7 @@ void LockstepParticipant::answer(const Done& done) {
   ack.participant = name_;
   ack.published = done.published;
   ack.next = done.next;
-  ack_pub_.publish(ack);
+  ack_pub_.publish(shared(std::move(ack)));
 }
 
 }  // namespace spherical_robots

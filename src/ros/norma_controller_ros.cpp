@@ -68,7 +68,7 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       input_(nh.resolveName("norma_state"), positiveParam(pnh, "input_timeout", 0.05)),
       actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "input_timeout", 0.05)),
       work_([this](const spherical_robots::NormaState& msg) { control(msg); }, step_publications_),
-      updater_(nh, pnh) {
+      updater_(nh, pnh, pnh.getNamespace()) {
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
   error_pub_ = step_publications_.advertise<spherical_robots::TrackingError>(nh, "tracking_error");
   target_pub_ = step_publications_.advertise<geometry_msgs::PointStamped>(nh, "target");
@@ -79,7 +79,7 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.setHardwareID("Norma");
   updater_.add("norma controller", this, &NormaControllerRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
-  work_.join(nh, {state_sub_, actuator_sub_});
+  work_.join(nh, pnh, {state_sub_, actuator_sub_});
   ROS_INFO_STREAM("Norma controller: "
                   << (controller().kind() == norma::ControllerKind::kPaper
                           ? "paper (eqs 48-51, Table 1)"

@@ -60,6 +60,7 @@ std::unique_ptr<PlantClock> makePlantClock(ros::NodeHandle nh, const ros::NodeHa
       settings.step = step;
       settings.speedup = nonNegativeSpeedup(pnh, 0.0);
       settings.leader = stringParam(pnh, "lockstep_leader", "");
+      settings.name = pnh.getNamespace();
       if (!settings.leader.empty() && settings.leader.front() != '/')
         throw std::invalid_argument("parameter " + pnh.resolveName("lockstep_leader") + " = \"" +
                                     settings.leader + "\" must be an absolute namespace (\"/sphere\")");

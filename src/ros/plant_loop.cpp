@@ -17,7 +17,7 @@ PlantLoop::PlantLoop(ros::NodeHandle nh, ros::NodeHandle pnh, const Defaults& de
       actuator_input_(nh.resolveName("actuators/state"),
                       positiveParam(pnh, "state_timeout", defaults.state_timeout)),
       tf_(step_publications_),
-      updater_(nh, pnh) {
+      updater_(nh, pnh, pnh.getNamespace()) {
   if (defaults.trail_period > 0.0)
     trail_.emplace(nh, "trail", kWorldFrame,
                    positiveParam(pnh, "trail_period", defaults.trail_period),

@@ -40,7 +40,7 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       input_(nh.resolveName(mode_ == Mode::Tracking ? "terrain_state" : "cmd_vel"),
              positiveParam(pnh, "input_timeout", 0.5)),
       input_timeout_(positiveParam(pnh, "input_timeout", 0.5)),
-      updater_(nh, pnh) {
+      updater_(nh, pnh, pnh.getNamespace()) {
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
   controller_ = config::makePursuitController(
       parsedParam(pnh, "law", "smooth", terrain::pursuitLawFromString), type_, terrain_config,
@@ -72,9 +72,9 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.add("pure pursuit controller", this, &PurePursuitRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
   const double period = 1.0 / positiveParam(pnh, "rate", 50.0);
-  if (isLockstepParticipant(nh)) {
+  if (isLockstepParticipant(nh, pnh)) {
     lockstep_ = std::make_unique<LockstepParticipant>(
-        nh, std::vector<ros::Subscriber>{state_sub_}, [this, period](const ros::Time& now) {
+        nh, pnh, std::vector<ros::Subscriber>{state_sub_}, [this, period](const ros::Time& now) {
           return LockstepParticipant::Done{control(now), now + ros::Duration(period)};
         });
     return;

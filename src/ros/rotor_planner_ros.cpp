@@ -57,7 +57,7 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       correction_tilt_tolerance_(positiveParam(pnh, "correction_tilt_tolerance", 1e-4)),
       correction_steps_(countParam(pnh, "correction_steps", 1, 1)),
       odom_input_(nh.resolveName("odom"), positiveParam(pnh, "odom_timeout", 0.5)),
-      updater_(nh, pnh),
+      updater_(nh, pnh, pnh.getNamespace()),
       driven_(nh, "driven_path", frame_id_, positiveParam(pnh, "path_period", 0.05),
               kMaxDrivenPoses, true) {
   if (samples_per_step_ < 1) {
@@ -83,10 +83,10 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   done_pub_ = nh.advertise<std_msgs::UInt32>("execution_done", 1, true);
   execute_sub_ = pnh.subscribe("execute", 1, &RotorPlannerRos::onExecute, this);
   odom_sub_ = nh.subscribe("odom", 10, &RotorPlannerRos::onOdometry, this);
-  if (isLockstepParticipant(nh)) {
+  if (isLockstepParticipant(nh, pnh)) {
     // Asked every command period, also between manoeuvres (it has nothing to send then).
     lockstep_ = std::make_unique<LockstepParticipant>(
-        nh, std::vector<ros::Subscriber>{odom_sub_}, [this](const ros::Time& now) {
+        nh, pnh, std::vector<ros::Subscriber>{odom_sub_}, [this](const ros::Time& now) {
           command(now);
           return LockstepParticipant::Done{step_publications_.take(),
                                            now + ros::Duration(command_period_)};

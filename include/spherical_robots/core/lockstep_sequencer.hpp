@@ -48,7 +48,7 @@ struct ParticipantRecord {
 
 class LockstepSequencer {
  public:
-  /// @param owner the sequencing node's name (its own finishing request carries it).
+  /// @param owner the sequencing node's caller id (its own finishing request carries it).
   /// @param expected participants in their order of work within a step; others may join and
   /// work after them. @param timeout [s] of wall time > 0 after which an awaited participant is
   /// dropped. @throw std::invalid_argument on a bad timeout or a repeated name.
@@ -70,8 +70,13 @@ class LockstepSequencer {
   /// The participant awaited now, if any (not the owner).
   const std::string* awaited() const;
 
-  /// An acknowledgement from `sender` (the transport's caller id) naming `participant`.
-  /// `next` [ns] is when it has work again (0 or less: the next step).
+  /// Whether a message from `sender` (the transport's caller id) may speak for `participant`:
+  /// the participant's own, or one from the owner's process, whose caller id the owner's name is
+  /// (nodelets in one manager share the manager's caller id).
+  bool sentBy(const std::string& sender, const std::string& participant) const;
+  /// An acknowledgement from `sender` (the transport's caller id) naming `participant`, forged
+  /// unless sentBy(sender, participant). `next` [ns] is when it has work again (0 or less: the
+  /// next step).
   AckOutcome acknowledge(const std::string& sender, const std::string& participant,
                          std::int64_t stamp, const std::vector<std::string>& published,
                          std::int64_t next);

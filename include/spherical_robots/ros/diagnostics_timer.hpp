@@ -11,7 +11,9 @@
 namespace spherical_robots {
 
 /// A wall timer that publishes `updater`'s report every updater.getPeriod() wall seconds
-/// (~diagnostic_period, default 1 s). Keep the timer as long as the updater.
+/// (~diagnostic_period, default 1 s). Keep the timer as long as the updater. Construct the
+/// updater as Updater(nh, pnh, pnh.getNamespace()): its default name, ros::this_node::getName(),
+/// would name every status of a nodelet after its manager.
 ros::WallTimer startDiagnostics(ros::NodeHandle& nh, diagnostic_updater::Updater& updater);
 
 }  // namespace spherical_robots

@@ -41,6 +41,8 @@ class LockstepClock : public PlantClock {
     std::vector<std::string> subscriptions;  ///< resolved topics the plant reads
     /// The namespace of the stack whose plant owns /clock; empty: this plant owns it.
     std::string leader;
+    /// The plant's node name (its private namespace): its name in the leader's barrier.
+    std::string name;
   };
 
   /// Advertises lockstep/step in nh's namespace, and, without a leader, /clock and the services

@@ -22,9 +22,11 @@
 
 namespace spherical_robots {
 
-/// Whether this node is named in <ns>/lockstep/participants (nh's namespace): then it takes part
-/// in lock-step time. @throw std::invalid_argument if the parameter is not a list of names.
-bool isLockstepParticipant(const ros::NodeHandle& nh);
+/// Whether the node whose private handle is `pnh` is named in <ns>/lockstep/participants (nh's
+/// namespace): then it takes part in lock-step time. A node's name is its private namespace, not
+/// ros::this_node::getName(), which in a nodelet manager is the manager's.
+/// @throw std::invalid_argument if the parameter is not a list of names.
+bool isLockstepParticipant(const ros::NodeHandle& nh, const ros::NodeHandle& pnh);
 /// <ns>/lockstep/participants resolved to node names, in order; empty if the parameter is unset.
 std::vector<std::string> lockstepParticipants(const ros::NodeHandle& nh);
 
@@ -45,12 +47,13 @@ class LockstepParticipant {
   /// The work of one step; nullopt: the step goes on elsewhere, and answer() ends it later.
   using Work = std::function<std::optional<Done>(const ros::Time& now)>;
 
+  /// @param pnh the node's private handle: its namespace is the node's name, the participant's.
   /// @param subscriptions the topics the node reads (what a request may make it wait for).
   /// Sends join requests, once every subscription has had a publisher for a second, until the first
   /// request, and again whenever no request has come for rejoin_after [s] of wall time (so a
   /// dropped participant comes back).
-  LockstepParticipant(ros::NodeHandle nh, std::vector<ros::Subscriber> subscriptions, Work work,
-                      double rejoin_after = 1.0);
+  LockstepParticipant(ros::NodeHandle nh, const ros::NodeHandle& pnh,
+                      std::vector<ros::Subscriber> subscriptions, Work work, double rejoin_after = 1.0);
 
   /// A message stamped `stamp` arrived on `topic` (call from the subscription's callback, after
   /// the node took the message in).
@@ -94,12 +97,13 @@ class MessageDrivenWork {
   MessageDrivenWork(Handle handle, StepPublications& publications)
       : handle_(std::move(handle)), publications_(&publications) {}
 
-  /// Takes part in lock-step if nh's node is listed (call once the subscriptions exist; the
-  /// first is the input).
-  void join(ros::NodeHandle nh, std::vector<ros::Subscriber> subscriptions) {
-    if (!isLockstepParticipant(nh)) return;
+  /// Takes part in lock-step if the node (private handle pnh) is listed (call once the
+  /// subscriptions exist; the first is the input).
+  void join(ros::NodeHandle nh, const ros::NodeHandle& pnh,
+            std::vector<ros::Subscriber> subscriptions) {
+    if (!isLockstepParticipant(nh, pnh)) return;
     participant_ = std::make_unique<LockstepParticipant>(
-        nh, std::move(subscriptions), [this](const ros::Time& now) {
+        nh, pnh, std::move(subscriptions), [this](const ros::Time& now) {
           LockstepParticipant::Done done;
           if (latest_ && latest_->header.stamp == now) {
             handle_(*latest_);

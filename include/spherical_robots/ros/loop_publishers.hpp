@@ -12,7 +12,10 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "spherical_robots/ros/shared_message.hpp"
 
 namespace spherical_robots {
 
@@ -26,9 +29,11 @@ class LoopPublisher {
   LoopPublisher() = default;
   LoopPublisher(ros::Publisher publisher, std::shared_ptr<std::vector<std::string>> published);
 
+  /// By shared pointer (shared_message.hpp): a nodelet in the same manager receives the message
+  /// itself, neither serialised nor copied.
   template <typename Message>
-  void publish(const Message& message) const {
-    publisher_.publish(message);
+  void publish(Message&& message) const {
+    publisher_.publish(shared(std::forward<Message>(message)));
     note();
   }
   /// The resolved topic.

@@ -1,5 +1,6 @@
 #pragma once
-// The one main() every node of the package shares.
+// The one main() every node of the package shares (node_nodelet.hpp runs the same classes as
+// nodelets).
 
 #include <ros/ros.h>
 
@@ -8,10 +9,11 @@
 
 namespace spherical_robots {
 
-/// After ros::init: constructs Node(nh, private nh) and spins. A construction error is a start-up
-/// failure: ROS_FATAL "<name> cannot start: <what>" and exit status 1.
+/// Initialises ROS as `name`, constructs Node(nh, private nh) and spins. A construction error is
+/// a start-up failure: ROS_FATAL "<name> cannot start: <what>" and exit status 1.
 template <typename Node>
-int spinNode(const char* name) {
+int runNode(int argc, char** argv, const char* name) {
+  ros::init(argc, argv, name);
   // Outside the try: destroying the last handle shuts ROS (and rosconsole) down before ROS_FATAL.
   ros::NodeHandle nh, pnh("~");
   std::optional<Node> node;
@@ -23,13 +25,6 @@ int spinNode(const char* name) {
   }
   ros::spin();  // outside the try: a runtime error is not a start-up failure
   return 0;
-}
-
-/// Initialises ROS as `name`, then spinNode<Node>.
-template <typename Node>
-int runNode(int argc, char** argv, const char* name) {
-  ros::init(argc, argv, name);
-  return spinNode<Node>(name);
 }
 
 }  // namespace spherical_robots
