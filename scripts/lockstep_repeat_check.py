@@ -36,7 +36,12 @@ STACKS = {
                            'tracking_error', 'target'], ('odom', 50.0), True),
     'norma': ('norma', ['odom', 'norma_state', 'joint_states', 'actuators/command',
                         'actuators/state', 'tracking_error'], ('norma_state', 1000.0), False),
+    'roller': ('roller', ['odom', 'terrain_state', 'drive/command', 'actuators/command',
+                          'actuators/state', 'drive/state', 'roller_drive', 'tracking_error'],
+               ('odom', 50.0), True),
 }
+# Not here: the rotor and FreeBOT stacks are driven from outside the loop (rotor_execute.py,
+# freebot_goal_sequence.py), so when their manoeuvres start depends on the machine.
 
 
 def free_port():
