@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages, builds, and runs every gtest and rostest of the package
-# (colcon test, under a virtual X server), then prints the summary.
+# (colcon test, under a virtual X server; two tests at a time: in lock-step a stack's results do
+# not depend on how busy the machine is, and the replay tests share the display by a lock), then
+# prints the summary.
 # Exit status: 0 only if at least one test ran and none failed.
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/env.sh"
@@ -23,7 +25,7 @@ sr_step "run gtests and rostests (colcon test, xvfb-run)" \
   xvfb-run -a -s "-screen 0 1280x1024x24" \
   colcon test --base-paths . --build-base build --install-base install \
     --event-handlers console_cohesion+ --return-code-on-test-failure \
-    --ctest-args --timeout 900 \
+    --ctest-args --timeout 900 -j2 \
   || test_rc=$?
 
 colcon test-result --test-result-base build --verbose || true
