@@ -397,6 +397,39 @@ TEST_F(SphereSimTest, LawSelectsTheTrackingLaw) {
   }
 }
 
+TEST_F(SphereSimTest, SampledLoopRunsAtTheStacksStepsAndStartsWhereTheContinuousRunStarts) {
+  const Process sampled = terrain({"--robot", "RS", "--path", "diamond", "--law", "smooth",
+                                   "--loop", "sampled", "--duration", "20", "--log-rate", "50"});
+  ASSERT_EQ(sampled.status, 0) << sampled.err;
+  const Csv rows = readCsv(out_);
+  ASSERT_EQ(rows.rows.size(), 1001u);  // t = 0, 0.02, ..., 20: the stack's terrain_state times
+  EXPECT_EQ(rows.at(1000, "t"), 20.0);
+  EXPECT_LT(rows.at(1000, "e_norm"), 0.1);  // it tracks
+  ASSERT_EQ(terrain({"--robot", "RS", "--path", "diamond", "--law", "smooth", "--duration", "20",
+                     "--log-rate", "50"}).status, 0);
+  const Csv continuous = readCsv(out_);
+  // At t = 0 both are the initial state and the law's error on it; the sampled robot's realised
+  // rates are its actuators', still at rest, where the continuous one realises the command.
+  for (const std::string& column : rows.header) {
+    if (column.size() > 5 && column.substr(column.size() - 5) == "_rate")
+      EXPECT_EQ(rows.at(0, column), 0.0) << column;
+    else
+      EXPECT_EQ(rows.at(0, column), continuous.at(0, column)) << column;
+  }
+  // The stack's sampling (10 ms steps, 50 Hz control, actuators within 50 rad/s^2) is not the
+  // continuous loop: the paths differ, though not by much.
+  const double apart = std::hypot(rows.at(1000, "x0") - continuous.at(1000, "x0"),
+                                  rows.at(1000, "y0") - continuous.at(1000, "y0"));
+  EXPECT_GT(apart, 1e-6);
+  EXPECT_LT(apart, 0.05);
+  // A step that is no whole number of nanoseconds' multiple of the log period, or a bad name.
+  EXPECT_EQ(terrain({"--robot", "3R", "--path", "circle", "--loop", "sampled", "--dt", "0.03",
+                     "--duration", "20", "--log-rate", "50"}).status, cli::kInvalidInput);
+  const Process bad = terrain({"--robot", "3R", "--path", "circle", "--loop", "lockstep"});
+  EXPECT_EQ(bad.status, cli::kUsageError);
+  EXPECT_NE(bad.err.find("--loop"), std::string::npos) << bad.err;
+}
+
 class SphereSimRobotTest : public SphereSimTest,
                            public ::testing::WithParamInterface<const char*> {};
 

@@ -55,6 +55,23 @@ TEST(DurationNanoseconds, RejectsWhatRosDurationCannotHold) {
   EXPECT_THROW(durationNanoseconds(3e9), std::invalid_argument);
 }
 
+TEST(PeriodDue, FallsDueOnTheStepMeantEvenForPeriodsOfNoWholeNanoseconds) {
+  EXPECT_TRUE(periodDue(0, 10000000, 0.02));  // never done
+  EXPECT_FALSE(periodDue(10000000, 20000000, 0.02));
+  EXPECT_TRUE(periodDue(10000000, 30000000, 0.02));
+  EXPECT_TRUE(periodDue(30000000, 20000000, 0.02));  // time went back
+  // 1/3 s is 333333333.33 ns: three 1 ns clock steps short of it still count as the period.
+  EXPECT_TRUE(periodDue(1, 1 + 333333333, 1.0 / 3));
+  EXPECT_FALSE(periodDue(1, 1 + 333333332, 1.0 / 3));
+}
+
+TEST(WithinTimeout, IsFreshFromItsTimeThroughTheTimeoutAndNotBefore) {
+  EXPECT_TRUE(withinTimeout(10000000, 10000000, 0.5));
+  EXPECT_TRUE(withinTimeout(10000000, 510000000, 0.5));
+  EXPECT_FALSE(withinTimeout(10000000, 510000001, 0.5));
+  EXPECT_FALSE(withinTimeout(10000000, 9999999, 0.5));  // accepted in the future
+}
+
 }  // namespace
 }  // namespace spherical_robots
 

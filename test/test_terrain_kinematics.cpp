@@ -196,6 +196,43 @@ TEST_P(KinematicsOnCosine, GeometryPutsTheContactOnTheSurfaceAndTheCentreAtPPlus
   }
 }
 
+TEST_P(KinematicsOnCosine, GeometryFromTheMessagesAxesIsTheGeometryLessItsHessian) {
+  for (auto s : kStates) {
+    s = stateFor(s);
+    const ContactGeometry g = kin_.geometry(s);
+    const ContactGeometry rebuilt = contactGeometryFromAxes(g.contact_point, g.centre,
+                                                            g.heading_frame.col(2), g.heading_frame.col(0));
+    EXPECT_EQ(rebuilt.contact_point, g.contact_point);
+    EXPECT_EQ(rebuilt.centre, g.centre);
+    EXPECT_LE((rebuilt.heading_frame - headingFrameOf(surface_.gradient(s.x, s.y), s.psi))
+                  .cwiseAbs().maxCoeff(), 1e-14);
+    EXPECT_LE((rebuilt.gradient - surface_.gradient(s.x, s.y)).norm(), 1e-14);
+    EXPECT_EQ(rebuilt.hessian, Eigen::Matrix2d::Zero());  // a message does not carry it
+  }
+}
+
+TEST(ActuatedRates, ListAndDriveRatesRoundTripInTheActuatorNamesOrder) {
+  const DriveRates rates{1.5, -2.5, 3.5};
+  const std::vector<std::pair<RobotType, std::vector<std::string>>> names = {
+      {RobotType::ThreeAxisRolling, {"theta", "phi", "psi"}},
+      {RobotType::TwoAxisRolling, {"theta", "phi"}},
+      {RobotType::RollingAndTurning, {"theta", "psi"}},
+      {RobotType::RollingAndSteering, {"alpha", "phi"}}};
+  for (const auto& [type, expected] : names) {
+    EXPECT_EQ(actuatorNames(type), expected) << toString(type);
+    const std::vector<double> values = actuatedValues(type, rates);
+    ASSERT_EQ(values.size(), expected.size()) << toString(type);
+    const DriveRates back = ratesFromActuated(type, values);
+    const DriveRates kept = keepActuated(type, rates);
+    EXPECT_EQ(back.roll_rate, kept.roll_rate);
+    EXPECT_EQ(back.lateral_rate, kept.lateral_rate);
+    EXPECT_EQ(back.turn_rate, kept.turn_rate);
+    EXPECT_THROW(ratesFromActuated(type, std::vector<double>(expected.size() + 1, 0.0)),
+                 std::invalid_argument);
+    EXPECT_THROW(ratesFromActuated(type, {}), std::invalid_argument);
+  }
+}
+
 TEST_P(KinematicsOnCosine, ShellAngularVelocityIsTheRealisedBodyRates) {
   for (auto s : kStates) {
     s = stateFor(s);

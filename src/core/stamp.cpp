@@ -33,4 +33,13 @@ Nanoseconds durationNanoseconds(double seconds) {
   return sec * kNanosecondsPerSecond + nsec;
 }
 
+bool periodDue(Nanoseconds last, Nanoseconds now, double period) {
+  return last == 0 || now < last || stampSeconds(now - last) >= period - 1e-9;
+}
+
+bool withinTimeout(Nanoseconds accepted, Nanoseconds now, double timeout) {
+  const double age = stampSeconds(now - accepted);
+  return age >= 0.0 && age <= timeout;
+}
+
 }  // namespace spherical_robots

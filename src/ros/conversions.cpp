@@ -16,15 +16,6 @@ constexpr double kUnitTolerance = 1e-6;
 // [rad] a trolley heading is an angle the chain winds up; no run turns a trolley a million radians.
 constexpr double kMaxHeading = 1e6;
 
-double& rateAt(terrain::DriveRates& rates, std::size_t i) {
-  std::array<double*, 3> fields{&rates.roll_rate, &rates.lateral_rate, &rates.turn_rate};
-  return *fields.at(i);
-}
-
-double rateAt(const terrain::DriveRates& rates, std::size_t i) {
-  return std::array<double, 3>{rates.roll_rate, rates.lateral_rate, rates.turn_rate}.at(i);
-}
-
 void requireUnit(const Eigen::Vector3d& v, const std::string& field) {
   if (std::abs(v.norm() - 1.0) > kUnitTolerance) {
     std::ostringstream what;
@@ -186,45 +177,21 @@ sensor_msgs::JointState velocityJointState(const std::vector<std::string>& names
   return msg;
 }
 
-namespace {
-
-/// The indices into DriveRates of the rates `type` actuates, and their actuator names.
-std::pair<std::vector<std::size_t>, std::vector<std::string>> actuatedRateNames(
-    terrain::RobotType type) {
-  const auto actuated = terrain::actuatedRates(type);
-  const auto names = terrain::rateNames(type);
-  std::pair<std::vector<std::size_t>, std::vector<std::string>> result;
-  for (std::size_t i = 0; i < actuated.size(); ++i) {
-    if (!actuated[i]) continue;
-    result.first.push_back(i);
-    result.second.emplace_back(names[i]);
-  }
-  return result;
-}
-
-}  // namespace
-
 terrain::DriveRates ratesFromJointState(terrain::RobotType type, const sensor_msgs::JointState& msg,
                                         double max_rate) {
-  const auto [indices, names] = actuatedRateNames(type);
-  std::vector<double> velocities;
   try {
-    velocities = velocitiesByName(msg, names, max_rate);
+    return terrain::ratesFromActuated(
+        type, velocitiesByName(msg, terrain::actuatorNames(type), max_rate));
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(std::string(e.what()) + " (robot type " +
                                 terrain::toString(type) + ")");
   }
-  terrain::DriveRates rates;
-  for (std::size_t k = 0; k < indices.size(); ++k) rateAt(rates, indices[k]) = velocities[k];
-  return rates;
 }
 
 sensor_msgs::JointState jointStateFromRates(terrain::RobotType type, const terrain::DriveRates& rates,
                                             const ros::Time& stamp) {
-  const auto [indices, names] = actuatedRateNames(type);
-  std::vector<double> velocities;
-  for (const std::size_t i : indices) velocities.push_back(rateAt(rates, i));
-  return velocityJointState(names, velocities, stamp);
+  return velocityJointState(terrain::actuatorNames(type), terrain::actuatedValues(type, rates),
+                            stamp);
 }
 
 PlanarTwist planarTwist(const geometry_msgs::Twist& twist, double max_magnitude) {
@@ -276,14 +243,9 @@ terrain::ContactGeometry contactGeometryFromMsg(const spherical_robots::TerrainS
     what << "normal.z = " << normal.z() << " does not point up";
     throw std::invalid_argument(what.str());
   }
-  terrain::ContactGeometry geometry;
-  geometry.contact_point = boundedPoint(msg.contact_point, "contact_point", max_position);
-  geometry.centre = boundedPoint(msg.centre, "centre", max_position);
-  geometry.heading_frame.col(0) = heading;
-  geometry.heading_frame.col(1) = normal.cross(heading);
-  geometry.heading_frame.col(2) = normal;
-  geometry.gradient = -normal.head<2>() / normal.z();
-  return geometry;
+  return terrain::contactGeometryFromAxes(
+      boundedPoint(msg.contact_point, "contact_point", max_position),
+      boundedPoint(msg.centre, "centre", max_position), normal, heading);
 }
 
 spherical_robots::TrackingError toTrackingErrorMsg(const terrain::TrackingError& error,

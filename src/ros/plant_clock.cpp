@@ -1,5 +1,7 @@
 #include "spherical_robots/ros/plant_clock.hpp"
 
+#include "spherical_robots/core/stamp.hpp"
+
 #include <ros/init.h>
 
 #include <stdexcept>
@@ -12,7 +14,8 @@
 namespace spherical_robots {
 
 bool periodDue(const ros::Time& last, const ros::Time& now, double period) {
-  return last.isZero() || now < last || (now - last).toSec() >= period - 1e-9;
+  return periodDue(static_cast<Nanoseconds>(last.toNSec()), static_cast<Nanoseconds>(now.toNSec()),
+                   period);
 }
 
 void PlantClock::report(diagnostic_updater::DiagnosticStatusWrapper& status) {

@@ -7,7 +7,6 @@
 #include <nav_msgs/Path.h>
 #include <sensor_msgs/JointState.h>
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -53,6 +52,7 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     path_ = parsedParam(pnh, "path", "circle", [&terrain_config](const std::string& name) {
       return config::makePath(name, terrain_config);
     });
+    tracker_ = std::make_unique<terrain::PathTracker>(*controller_, *path_, *surface_);
     error_pub_ = step_publications_.advertise<spherical_robots::TrackingError>(nh, "tracking_error");
     target_pub_ = step_publications_.advertise<geometry_msgs::PointStamped>(nh, "target");
     desired_path_pub_ = nh.advertise<nav_msgs::Path>("desired_path", 1, true);
@@ -142,9 +142,8 @@ void PurePursuitRos::onTimer(const ros::TimerEvent& event) {
 std::vector<std::string> PurePursuitRos::control(const ros::Time& now) {
   const double jump = clock_.jumpOver(now.toSec());
   if (jump != 0.0 && timer_guard_) timer_guard_->reset();
-  if (jump != 0.0 && !start_.isZero()) {
-    // The reference goes on from where it was, not from where the jump would put it.
-    start_ = ros::Time(std::max(0.0, start_.toSec() + jump));  // ros::Time cannot go below 0
+  if (jump != 0.0 && tracker_ && tracker_->started()) {
+    tracker_->shiftStart(jump);
     ROS_WARN_STREAM("ROS time jumped by " << jump << " s to " << now.toSec()
                                           << " s; the reference continues where it was");
   }
@@ -163,26 +162,17 @@ std::vector<std::string> PurePursuitRos::control(const ros::Time& now) {
 
 terrain::DriveRates PurePursuitRos::track(const ros::Time& now) {
   if (!geometry_ || !input_.fresh(now)) return {};
-  if (start_.isZero()) start_ = now;
-  const terrain::DesiredPoint desired =
-      terrain::liftOntoSurface(*path_, *surface_, (now - start_).toSec(),
-                               controller_->velocityWindow());
-  const terrain::TrackingError error = terrain::trackingError(*geometry_, desired.position);
-  const terrain::DriveRates rates = controller_->command(*geometry_, tilt_, error, desired.velocity);
-  // Nothing non-finite is published; onTimer() commands zero instead.
-  requireFinite(error.norm, "|e_t|");
-  requireFinite(error.zeta, "zeta");
-  requireFinite(rates.roll_rate, "roll rate set-point");
-  requireFinite(rates.lateral_rate, "lateral rate set-point");
-  requireFinite(rates.turn_rate, "turn rate set-point");
-  error_ = error;
-  error_pub_.publish(conversions::toTrackingErrorMsg(error_, desired, kWorldFrame, now));
+  // Throws on a non-finite error or command; control() commands zero instead.
+  const terrain::TrackingCommand tracked =
+      tracker_->command(static_cast<Nanoseconds>(now.toNSec()), *geometry_, tilt_);
+  error_ = tracked.error;
+  error_pub_.publish(conversions::toTrackingErrorMsg(error_, tracked.desired, kWorldFrame, now));
   geometry_msgs::PointStamped target;
   target.header.stamp = now;
   target.header.frame_id = kWorldFrame;
-  target.point = conversions::toPoint(desired.position);
+  target.point = conversions::toPoint(tracked.desired.position);
   target_pub_.publish(target);
-  return rates;
+  return tracked.rates;
 }
 
 terrain::DriveRates PurePursuitRos::teleop() {

@@ -185,4 +185,17 @@ TerrainState TerrainKinematics::constrain(const TerrainState& state) const {
   return constrained;
 }
 
+ContactGeometry contactGeometryFromAxes(const Eigen::Vector3d& contact_point,
+                                        const Eigen::Vector3d& centre, const Eigen::Vector3d& normal,
+                                        const Eigen::Vector3d& heading) {
+  ContactGeometry geometry;
+  geometry.contact_point = contact_point;
+  geometry.centre = centre;
+  geometry.heading_frame.col(0) = heading;
+  geometry.heading_frame.col(1) = normal.cross(heading);
+  geometry.heading_frame.col(2) = normal;
+  geometry.gradient = -normal.head<2>() / normal.z();
+  return geometry;
+}
+
 }  // namespace spherical_robots::terrain

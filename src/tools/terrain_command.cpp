@@ -51,8 +51,11 @@ TerrainRunSettings settingsFrom(const ParsedOptions& options) {
   settings.path = options.text("path");
   settings.model = terrain::contactModelFromString(options.text("model"));
   settings.law = terrain::pursuitLawFromString(options.text("law"));
+  settings.loop = options.text("loop") == "sampled" ? TerrainLoop::Sampled : TerrainLoop::Continuous;
   settings.duration = options.number("duration");
-  settings.dt = options.number("dt");
+  settings.dt = options.given("dt") ? options.number("dt")
+                : settings.loop == TerrainLoop::Sampled ? terrain::StackSampling{}.plant_step
+                                                        : TerrainRunSettings{}.dt;
   settings.log_rate = options.number("log-rate");
   settings.config_dir = configDirectory(options);
   return settings;
@@ -72,6 +75,15 @@ const char* const kDescription =
 law evaluated at every RK4 stage) with a fixed step. The scenario (surface, paths, the gains of
 both laws, RS tilt limit) is DIR/config/terrain.yaml; the sphere's radius is the base_link
 sphere of DIR/urdf/terrain_robot.urdf.
+
+--loop sampled runs the loop as the launched stack (launch/terrain_stack.launch, clock:=lockstep,
+ideal actuators) samples it, with the core code each node calls and in the order of one
+lock-step step: the plant advances with the actuators' last measured rates held, the controller
+commands from the state last published, the actuators follow within their limits. Times are
+whole nanoseconds from the stack's first step (t = 0 here), so every row equals the stack's
+messages of the same time since its first stamp: terrain_state (contact point, centre, psi, phi,
+realised rates) and tracking_error (the controller's latest desired point and error, held
+between its 50 Hz steps). The stack's default run is --law smooth --loop sampled --log-rate 50.
 
 CSV columns (SI units, radians; one row every 1/log-rate s from t = 0 through the duration):
   t             time [s]
@@ -137,32 +149,48 @@ TerrainRun::TerrainRun(const TerrainRunSettings& settings) : settings_(settings)
   controller_ = config::makePursuitController(settings.law, settings.robot, scenario, radius);
 }
 
-terrain::TrackingSummary TerrainRun::simulate(std::ostream* csv) const {
-  terrain::TerrainSimulation simulation(*kinematics_, *controller_, *path_,
-                                        terrain::TerrainState{});
+template <typename Step, typename RowAt>
+terrain::TrackingSummary TerrainRun::run(std::ostream* csv, Step step, RowAt row_at) const {
   terrain::TrackingSummary summary(kConvergedError, kSettleTime);
   std::unique_ptr<CsvWriter> writer;
   if (csv != nullptr) {
     writer = std::make_unique<CsvWriter>(
         *csv, std::vector<std::string>(std::begin(kColumns), std::end(kColumns)));
   }
-
   for (long row = 0;; ++row) {
-    const terrain::TerrainSample sample = simulation.sample();
-    summary.add(sample.t, sample.error.norm);
-    if (writer) {
-      const Eigen::Vector3d& p0 = sample.geometry.contact_point;
-      const Eigen::Vector3d& pd = sample.desired.position;
-      const Eigen::Vector3d& centre = sample.geometry.centre;
-      writer->row({sample.t, p0.x(), p0.y(), p0.z(), pd.x(), pd.y(), pd.z(), sample.error.norm,
-                   sample.error.zeta, sample.state.psi, sample.state.phi, centre.x(), centre.y(),
-                   centre.z(), sample.rates.roll_rate, sample.rates.lateral_rate,
-                   sample.rates.turn_rate});
-    }
+    row_at([&](const Row& r) {
+      summary.add(r.t, r.error.norm);
+      if (!writer) return;
+      const Eigen::Vector3d& p0 = r.geometry.contact_point;
+      const Eigen::Vector3d& pd = r.desired.position;
+      const Eigen::Vector3d& centre = r.geometry.centre;
+      writer->row({r.t, p0.x(), p0.y(), p0.z(), pd.x(), pd.y(), pd.z(), r.error.norm, r.error.zeta,
+                   r.state.psi, r.state.phi, centre.x(), centre.y(), centre.z(), r.rates.roll_rate,
+                   r.rates.lateral_rate, r.rates.turn_rate});
+    });
     if (row == rows_) break;
-    for (long step = 0; step < steps_per_row_; ++step) simulation.step(settings_.dt);
+    for (long k = 0; k < steps_per_row_; ++k) step();
   }
   return summary;
+}
+
+terrain::TrackingSummary TerrainRun::simulate(std::ostream* csv) const {
+  if (settings_.loop == TerrainLoop::Sampled) {
+    terrain::StackSampling sampling;
+    sampling.plant_step = settings_.dt;
+    terrain::SampledTerrainLoop loop(*kinematics_, *controller_, *path_, sampling);
+    loop.step();  // the stack's first step is its t = 0
+    return run(csv, [&loop] { loop.step(); }, [&loop](const auto& write) {
+      const terrain::SampledTerrainSample s = loop.sample();
+      write(Row{s.t, s.state, s.geometry, s.tracked.desired, s.tracked.error, s.realised});
+    });
+  }
+  terrain::TerrainSimulation simulation(*kinematics_, *controller_, *path_,
+                                        terrain::TerrainState{});
+  return run(csv, [&] { simulation.step(settings_.dt); }, [&simulation](const auto& write) {
+    const terrain::TerrainSample s = simulation.sample();
+    write(Row{s.t, s.state, s.geometry, s.desired, s.error, s.rates});
+  });
 }
 
 std::string TerrainRun::describe(const terrain::TrackingSummary& summary) const {
@@ -223,6 +251,16 @@ Subcommand terrainCommand() {
        terrain::toString(defaults.law),
        false,
        {"paper", "smooth"}},
+      {"loop",
+       "NAME",
+       "How the loop runs: continuous (the law evaluated at every RK4 stage, as the paper's\n"
+       "continuous-time feedback) or sampled (as launch/terrain_stack.launch runs it in\n"
+       "lock-step: plant steps of --dt with the measured rates held, terrain_state and the\n"
+       "controller at 50 Hz, ideal actuators at 100 Hz limited to 20 rad/s and 50 rad/s^2,\n"
+       "times in whole nanoseconds: equal to the stack's run value for value).",
+       "continuous",
+       false,
+       {"continuous", "sampled"}},
       {"duration",
        "SECONDS",
        "Simulated time [s], >= 0; a whole number of log periods.",
@@ -231,8 +269,9 @@ Subcommand terrainCommand() {
        {}},
       {"dt",
        "SECONDS",
-       "Fixed RK4 step [s], > 0; the duration must be a whole number of steps.",
-       formatNumber(defaults.dt),
+       "continuous: fixed RK4 step [s], > 0 (default 0.005); sampled: the plant's step\n"
+       "(default 0.01, the stack's). The duration must be a whole number of steps.",
+       "",
        false,
        {}},
       {"log-rate",

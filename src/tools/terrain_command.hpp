@@ -10,11 +10,16 @@
 #include "spherical_robots/terrain/pursuit_law.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/robot_type.hpp"
+#include "spherical_robots/terrain/sampled_terrain_loop.hpp"
 #include "spherical_robots/terrain/surface.hpp"
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
 #include "spherical_robots/terrain/terrain_simulation.hpp"
 
 namespace spherical_robots::sphere_sim {
+
+/// How the loop is run: continuous (the law at every RK4 stage) or sampled as the terrain stack
+/// samples it (terrain::SampledTerrainLoop).
+enum class TerrainLoop { Continuous, Sampled };
 
 /// A terrain run as the command line describes it.
 struct TerrainRunSettings {
@@ -24,7 +29,8 @@ struct TerrainRunSettings {
   /// The paper's law by default: the subcommand reproduces the paper.
   terrain::PursuitLaw law = terrain::PursuitLaw::Paper;
   double duration = 200.0;  ///< [s], >= 0, a whole number of log periods
-  double dt = 0.005;        ///< RK4 step [s] > 0
+  TerrainLoop loop = TerrainLoop::Continuous;
+  double dt = 0.005;        ///< RK4 step [s] > 0 (continuous); the plant's step (sampled)
   double log_rate = 10.0;   ///< CSV rows per second [Hz]; 1/log_rate a whole number of steps
   std::string config_dir;   ///< holds config/terrain.yaml and urdf/terrain_robot.urdf
 };
@@ -52,6 +58,19 @@ class TerrainRun {
   std::string describe(const terrain::TrackingSummary& summary) const;
 
  private:
+  /// One CSV row and the summary's sample.
+  struct Row {
+    double t;
+    const terrain::TerrainState& state;
+    const terrain::ContactGeometry& geometry;
+    const terrain::DesiredPoint& desired;
+    const terrain::TrackingError& error;
+    const terrain::DriveRates& rates;
+  };
+  /// Runs `step` between rows and `row` for each, from t = 0 through the duration.
+  template <typename Step, typename RowAt>
+  terrain::TrackingSummary run(std::ostream* csv, Step step, RowAt row) const;
+
   TerrainRunSettings settings_;
   long steps_per_row_ = 0;
   long rows_ = 0;  // after the one at t = 0

@@ -18,4 +18,12 @@ double stampSeconds(Nanoseconds ns);
 /// a 32-bit count of seconds.
 Nanoseconds durationNanoseconds(double seconds);
 
+/// Whether something done every `period` [s], last at `last` (0: never), is due again at `now`:
+/// never done, time went back, or at least period - 1 ns has passed (a period that is not a whole
+/// number of nanoseconds still falls due on the step it was meant for).
+bool periodDue(Nanoseconds last, Nanoseconds now, double period);
+
+/// Whether an input accepted at `accepted` is still fresh at `now`: 0 <= age <= timeout [s].
+bool withinTimeout(Nanoseconds accepted, Nanoseconds now, double timeout);
+
 }  // namespace spherical_robots

@@ -15,6 +15,7 @@
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/core/clock_jump.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/terrain/path_tracker.hpp"
 #include "spherical_robots/terrain/pure_pursuit.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/surface.hpp"
@@ -75,6 +76,7 @@ class PurePursuitRos {
   std::unique_ptr<terrain::Surface> surface_;
   std::unique_ptr<terrain::ReferencePath> path_;
   std::unique_ptr<terrain::PursuitController> controller_;
+  std::unique_ptr<terrain::PathTracker> tracker_;  ///< tracking mode
 
   std::optional<terrain::ContactGeometry> geometry_;  ///< from the last good terrain_state
   double tilt_ = 0.0;                                 ///< RS phi from the last good terrain_state
@@ -84,7 +86,6 @@ class PurePursuitRos {
   terrain::DriveRates command_;
   terrain::TrackingError error_;
   unsigned long failures_ = 0;
-  ros::Time start_;
   double max_position_;
   double max_cmd_vel_;
   double max_stamp_skew_;

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 namespace spherical_robots::terrain {
 
@@ -36,5 +37,16 @@ std::array<const char*, 3> rateNames(RobotType type);
 
 /// The rates with every rate the type does not actuate set to 0 (RS turn_rate included).
 DriveRates keepActuated(RobotType type, const DriveRates& rates);
+
+/// The names of the actuators the type has, in DriveRates order (the non-null rateNames()): the
+/// names on actuators/command and actuators/state, e.g. RT {"theta", "psi"}.
+std::vector<std::string> actuatorNames(RobotType type);
+
+/// The actuated rates as a list in actuatorNames() order.
+std::vector<double> actuatedValues(RobotType type, const DriveRates& rates);
+
+/// DriveRates from values in actuatorNames() order, the rest 0.
+/// @throw std::invalid_argument if there are not as many values as actuators.
+DriveRates ratesFromActuated(RobotType type, const std::vector<double>& values);
 
 }  // namespace spherical_robots::terrain

@@ -53,6 +53,14 @@ struct ContactGeometry {
   Eigen::Matrix2d hessian = Eigen::Matrix2d::Zero();        ///< f's Hessian at P0 [1/m]
 };
 
+/// The geometry as a state message carries it (P0, centre, normal n, heading h), rebuilt as the
+/// controller rebuilds it from the message: l = n x h, the gradient from n = (-f_x, -f_y, 1) / |.|,
+/// no Hessian. A batch run that replays the stack passes its geometry through this, so that its
+/// controller sees the very doubles the stack's controller sees. n and h are taken as given.
+ContactGeometry contactGeometryFromAxes(const Eigen::Vector3d& contact_point,
+                                        const Eigen::Vector3d& centre, const Eigen::Vector3d& normal,
+                                        const Eigen::Vector3d& heading);
+
 class TerrainKinematics {
  public:
   /// @param radius R [m] > 0; @param tilt_limit RS |phi| limit [rad] in (0, pi/2).

@@ -1,0 +1,98 @@
+#pragma once
+// The terrain stack's loop as a batch run (docs/lockstep.md, "Equal to the batch run"): what one
+// lock-step step of launch/terrain_stack.launch does, in its order, with its times as ros::Time
+// carries them (whole nanoseconds, from the first step at one plant step) and its messages as
+// float64 values. At each step t:
+//   1. the plant (terrain_kinematics) advances from its last step to t with the rates it last
+//      measured held (at rest if they are older than the state timeout), and every publish period
+//      sends its state;
+//   2. the controller (pure_pursuit_controller), at its rate, commands from the last state it
+//      received (at rest if older than its input timeout), the geometry rebuilt from the message;
+//   3. the hardware interface (hardware_interface_sim, ideal actuators) takes the command at t and,
+//      at its rate, advances the actuators to t and reports their velocities, which the plant reads.
+// Each part is the core code its node calls (advanceWithHeldRates, PathTracker,
+// SimulatedActuators), so a run equals the stack's value for value (test/batch_equality.test).
+
+#include <Eigen/Geometry>
+
+#include "spherical_robots/core/stamp.hpp"
+#include "spherical_robots/hardware/simulated_actuators.hpp"
+#include "spherical_robots/terrain/path_tracker.hpp"
+#include "spherical_robots/terrain/terrain_kinematics.hpp"
+
+namespace spherical_robots::terrain {
+
+/// How the stack samples its loop: the nodes' parameters as launch/terrain_stack.launch sets them.
+struct StackSampling {
+  double plant_step = 0.01;        ///< terrain_kinematics ~step [s]
+  double publish_rate = 50.0;      ///< terrain_kinematics ~publish_rate [Hz]: terrain_state
+  double state_timeout = 0.5;      ///< terrain_kinematics ~state_timeout [s]: actuator states
+  double control_rate = 50.0;      ///< pure_pursuit_controller ~rate [Hz]
+  double input_timeout = 0.5;      ///< pure_pursuit_controller ~input_timeout [s]: terrain_state
+  double hardware_rate = 100.0;    ///< hardware_interface ~rate [Hz]
+  double max_velocity = 20.0;      ///< hardware_interface ~max_velocity [rad/s]
+  double max_acceleration = 50.0;  ///< hardware_interface ~max_acceleration [rad/s^2]
+  double command_timeout = 0.5;    ///< hardware_interface ~command_timeout [s]
+};
+
+/// @throw std::invalid_argument naming the first field that is not finite and > 0.
+void validate(const StackSampling& sampling);
+
+/// The loop after a step.
+struct SampledTerrainSample {
+  double t = 0.0;  ///< [s] since the first step
+  TerrainState state;
+  ContactGeometry geometry;  ///< the plant's, at state
+  DriveRates realised;       ///< the rates the robot realises from the held measured ones
+  TrackingCommand tracked;   ///< the controller's latest (held between its steps)
+};
+
+class SampledTerrainLoop {
+ public:
+  /// The kinematics, law and path must outlive the loop; the law must be for the kinematics'
+  /// robot type. @throw std::invalid_argument on a bad sampling or a type mismatch.
+  SampledTerrainLoop(const TerrainKinematics& kinematics, const PursuitController& law,
+                     const ReferencePath& path, const StackSampling& sampling = {},
+                     const TerrainState& initial = {});
+
+  /// One step of the stack, the first at t = one plant step. @throw std::runtime_error if the
+  /// plant's state stops being finite or the actuators refuse a command (neither happens in a
+  /// stack that runs on).
+  void step();
+
+  /// After the latest step; before the first, the initial state at t = 0.
+  SampledTerrainSample sample() const;
+  /// The latest step's time, as the stack stamps it [ns] (0 before the first).
+  Nanoseconds now() const { return now_; }
+
+ private:
+  const TerrainKinematics& kinematics_;
+  StackSampling sampling_;
+  PathTracker tracker_;
+  hardware::SimulatedActuators actuators_;
+  std::vector<std::string> actuator_names_;
+  Nanoseconds step_;
+  Nanoseconds control_period_;
+  Nanoseconds hardware_period_;
+
+  Nanoseconds now_ = 0;
+  Nanoseconds start_ = 0;      ///< the first step's time
+  Nanoseconds last_tick_ = 0;  ///< the plant's latest step
+  // The plant (terrain_kinematics).
+  TerrainState state_;
+  Eigen::Quaterniond orientation_;
+  DriveRates measured_;           ///< the last actuator state read
+  Nanoseconds measured_at_ = 0;   ///< when it was read; 0: never
+  DriveRates drive_;              ///< what moved the plant in the latest step
+  Nanoseconds last_publish_ = 0;  ///< 0: never
+  // The controller (pure_pursuit_controller).
+  ContactGeometry received_;      ///< from the last terrain_state
+  double received_tilt_ = 0.0;
+  Nanoseconds received_at_ = 0;   ///< 0: none yet
+  Nanoseconds control_due_ = 0;
+  TrackingCommand tracked_;
+  // The hardware interface.
+  Nanoseconds hardware_due_ = 0;
+};
+
+}  // namespace spherical_robots::terrain

@@ -1,0 +1,37 @@
+#include "spherical_robots/terrain/path_tracker.hpp"
+
+#include <algorithm>
+
+#include "spherical_robots/core/validation.hpp"
+
+namespace spherical_robots::terrain {
+
+PathTracker::PathTracker(const PursuitController& law, const ReferencePath& path,
+                         const Surface& surface)
+    : law_(law), path_(path), surface_(surface) {}
+
+TrackingCommand PathTracker::command(Nanoseconds now, const ContactGeometry& geometry,
+                                     double tilt) {
+  if (!started_) {
+    started_ = true;
+    start_ = now;
+  }
+  TrackingCommand result;
+  result.desired =
+      liftOntoSurface(path_, surface_, stampSeconds(now - start_), law_.velocityWindow());
+  result.error = trackingError(geometry, result.desired.position);
+  result.rates = law_.command(geometry, tilt, result.error, result.desired.velocity);
+  // Nothing non-finite leaves the controller.
+  requireFinite(result.error.norm, "|e_t|");
+  requireFinite(result.error.zeta, "zeta");
+  requireFinite(result.rates.roll_rate, "roll rate set-point");
+  requireFinite(result.rates.lateral_rate, "lateral rate set-point");
+  requireFinite(result.rates.turn_rate, "turn rate set-point");
+  return result;
+}
+
+void PathTracker::shiftStart(double jump) {
+  if (started_) start_ = std::max<Nanoseconds>(0, start_ + durationNanoseconds(jump));
+}
+
+}  // namespace spherical_robots::terrain

@@ -1,0 +1,116 @@
+#include "spherical_robots/terrain/sampled_terrain_loop.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "spherical_robots/core/validation.hpp"
+#include "spherical_robots/terrain/terrain_simulation.hpp"
+
+namespace spherical_robots::terrain {
+namespace {
+
+hardware::SimulatedActuators idealActuators(RobotType type, const StackSampling& sampling) {
+  hardware::ActuatorLimits limits;
+  limits.max_velocity = sampling.max_velocity;
+  limits.max_acceleration = sampling.max_acceleration;
+  const std::vector<std::string> names = actuatorNames(type);
+  return hardware::SimulatedActuators(names, std::vector<hardware::ActuatorLimits>(names.size(), limits),
+                                      sampling.command_timeout);
+}
+
+}  // namespace
+
+void validate(const StackSampling& sampling) {
+  const std::pair<double, const char*> fields[] = {
+      {sampling.plant_step, "plant step [s]"},
+      {sampling.publish_rate, "plant publish rate [Hz]"},
+      {sampling.state_timeout, "plant state timeout [s]"},
+      {sampling.control_rate, "controller rate [Hz]"},
+      {sampling.input_timeout, "controller input timeout [s]"},
+      {sampling.hardware_rate, "hardware interface rate [Hz]"},
+      {sampling.max_velocity, "actuator velocity limit [rad/s]"},
+      {sampling.max_acceleration, "actuator acceleration limit [rad/s^2]"},
+      {sampling.command_timeout, "hardware command timeout [s]"}};
+  for (const auto& [value, name] : fields) requirePositive(value, name);
+}
+
+SampledTerrainLoop::SampledTerrainLoop(const TerrainKinematics& kinematics,
+                                       const PursuitController& law, const ReferencePath& path,
+                                       const StackSampling& sampling, const TerrainState& initial)
+    : kinematics_(kinematics),
+      sampling_((validate(sampling), sampling)),
+      tracker_(law, path, kinematics.surface()),
+      actuators_(idealActuators(kinematics.type(), sampling)),
+      actuator_names_(actuatorNames(kinematics.type())),
+      // As the nodes turn their parameters into ros::Duration.
+      step_(durationNanoseconds(sampling.plant_step)),
+      control_period_(durationNanoseconds(1.0 / sampling.control_rate)),
+      hardware_period_(durationNanoseconds(1.0 / sampling.hardware_rate)),
+      state_(initial),
+      orientation_(kinematics.geometry(initial).heading_frame) {
+  if (law.type() != kinematics.type()) {
+    throw std::invalid_argument("the law is for robot type " + toString(law.type()) +
+                                " but the kinematics are " + toString(kinematics.type()));
+  }
+  if (step_ <= 0) throw std::invalid_argument("plant step [s] is below one nanosecond");
+}
+
+void SampledTerrainLoop::step() {
+  now_ += step_;
+  // 1. The plant (PlantLoop::tick, TerrainPlantRos).
+  const bool measured_fresh =
+      measured_at_ != 0 && withinTimeout(measured_at_, now_, sampling_.state_timeout);
+  drive_ = measured_fresh ? measured_ : DriveRates{};
+  if (start_ == 0) {
+    start_ = now_;
+  } else {
+    const RollingState next =
+        advanceWithHeldRates(kinematics_, {state_, orientation_}, drive_,
+                             stampSeconds(now_ - last_tick_), sampling_.plant_step);
+    state_ = next.state;
+    orientation_ = next.orientation;
+  }
+  last_tick_ = now_;
+  if (periodDue(last_publish_, now_, 1.0 / sampling_.publish_rate)) {
+    last_publish_ = now_;
+    const ContactGeometry sent = kinematics_.geometry(state_);
+    received_ = contactGeometryFromAxes(sent.contact_point, sent.centre, sent.heading_frame.col(2),
+                                        sent.heading_frame.col(0));
+    received_tilt_ = state_.phi;
+    received_at_ = now_;
+  }
+  // 2. The controller (PurePursuitRos::control), which the sequencer asks when it is due.
+  if (now_ >= control_due_) {
+    control_due_ = now_ + control_period_;
+    DriveRates command;
+    if (received_at_ != 0 && withinTimeout(received_at_, now_, sampling_.input_timeout)) {
+      tracked_ = tracker_.command(now_, received_, received_tilt_);
+      command = tracked_.rates;
+    }
+    // 3a. The hardware interface takes the command as it arrives, stamped with the step.
+    const std::string refused =
+        actuators_.command(actuator_names_, actuatedValues(kinematics_.type(), command),
+                           stampSeconds(now_));
+    if (!refused.empty()) throw std::runtime_error("the actuators refused a command: " + refused);
+  }
+  // 3b. The hardware interface's own work when it is due; the plant reads what it reports.
+  if (now_ >= hardware_due_) {
+    hardware_due_ = now_ + hardware_period_;
+    actuators_.update(stampSeconds(now_));
+    measured_ = ratesFromActuated(kinematics_.type(), actuators_.measuredVelocities());
+    measured_at_ = now_;
+  }
+}
+
+SampledTerrainSample SampledTerrainLoop::sample() const {
+  SampledTerrainSample sample;
+  sample.t = start_ == 0 ? 0.0 : stampSeconds(now_ - start_);
+  sample.state = state_;
+  sample.geometry = kinematics_.geometry(state_);
+  sample.realised = kinematics_.realisedRates(state_, drive_);
+  sample.tracked = tracked_;
+  return sample;
+}
+
+}  // namespace spherical_robots::terrain
