@@ -52,4 +52,16 @@ std::optional<std::string> YamlParameterSource::text(const std::string& key) con
   return node.as<std::string>();
 }
 
+std::optional<std::vector<std::string>> YamlParameterSource::keys(const std::string& key) const {
+  const YAML::Node node = find(key);
+  if (!node.IsDefined() || node.IsNull()) return std::nullopt;
+  if (!node.IsMap()) {
+    throw std::invalid_argument(path_ + ": parameter '" + key + "' must be a dictionary, got '" +
+                                YAML::Dump(node) + "'");
+  }
+  std::vector<std::string> result;
+  for (const auto& entry : node) result.push_back(entry.first.as<std::string>());
+  return result;
+}
+
 }  // namespace spherical_robots::config

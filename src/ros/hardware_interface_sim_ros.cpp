@@ -5,12 +5,12 @@
 #include "spherical_robots/ros/timer_jump_guard.hpp"
 
 #include <algorithm>
-#include <cstdint>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
+#include "spherical_robots/config/actuator_models.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 #include "spherical_robots/ros/shared_message.hpp"
 
@@ -47,66 +47,6 @@ std::vector<std::string> readActuatorNames(const ros::NodeHandle& pnh) {
   return names;
 }
 
-const std::vector<std::string> kModelFields = {"time_constant", "dead_time",
-                                               "position_resolution", "velocity_noise"};
-
-/// A finite number >= 0, fallback when absent.
-double nonNegativeParam(const ros::NodeHandle& pnh, const std::string& name, double fallback) {
-  const double value = numberParam(pnh, name, fallback);
-  if (value < 0.0) {
-    std::ostringstream problem;
-    problem << "must be finite and >= 0, got " << value;
-    throw badParameter(pnh, name, problem.str());
-  }
-  return value;
-}
-
-/// The dictionary at key must hold model fields only, so that a typo does not silently do nothing.
-void requireModelFields(const ros::NodeHandle& pnh, const std::string& key,
-                        const XmlRpc::XmlRpcValue& value) {
-  if (value.getType() != XmlRpc::XmlRpcValue::TypeStruct)
-    throw badParameter(pnh, key, "must be a dictionary field -> value, got " + describe(value));
-  for (auto field = value.begin(); field != value.end(); ++field)
-    if (std::find(kModelFields.begin(), kModelFields.end(), field->first) == kModelFields.end())
-      throw badParameter(pnh, key + "/" + field->first,
-                         "is not a model field (time_constant, dead_time, "
-                         "position_resolution, velocity_noise)");
-}
-
-hardware::ActuatorModel readModel(const ros::NodeHandle& pnh, const std::string& key,
-                                  const hardware::ActuatorModel& fallback) {
-  hardware::ActuatorModel model;
-  model.time_constant = nonNegativeParam(pnh, key + "/time_constant", fallback.time_constant);
-  model.dead_time = nonNegativeParam(pnh, key + "/dead_time", fallback.dead_time);
-  model.position_resolution =
-      nonNegativeParam(pnh, key + "/position_resolution", fallback.position_resolution);
-  model.velocity_noise = nonNegativeParam(pnh, key + "/velocity_noise", fallback.velocity_noise);
-  return model;
-}
-
-/// ~default_model/<field> for every actuator, overridden field by field by
-/// ~models/<name>/<field>; every field optional (0: off). A key under ~models that is not an
-/// actuator name is an error, like an unknown field.
-std::vector<hardware::ActuatorModel> readModels(const ros::NodeHandle& pnh,
-                                                const std::vector<std::string>& names) {
-  XmlRpc::XmlRpcValue value;
-  if (pnh.getParam("default_model", value)) requireModelFields(pnh, "default_model", value);
-  if (pnh.getParam("models", value)) {
-    if (value.getType() != XmlRpc::XmlRpcValue::TypeStruct)
-      throw badParameter(pnh, "models",
-                         "must be a dictionary actuator name -> model, got " + describe(value));
-    for (auto it = value.begin(); it != value.end(); ++it) {
-      if (std::find(names.begin(), names.end(), it->first) == names.end())
-        throw badParameter(pnh, "models/" + it->first, "names no actuator in actuator_names");
-      requireModelFields(pnh, "models/" + it->first, it->second);
-    }
-  }
-  const hardware::ActuatorModel default_model = readModel(pnh, "default_model", {});
-  std::vector<hardware::ActuatorModel> models;
-  for (const auto& name : names) models.push_back(readModel(pnh, "models/" + name, default_model));
-  return models;
-}
-
 /// ~effort_limits: {name: max effort [N m or N], ...}; the actuators it names are effort actuators.
 std::map<std::string, double> readEffortLimits(const ros::NodeHandle& pnh,
                                                const std::vector<std::string>& names) {
@@ -122,14 +62,6 @@ std::map<std::string, double> readEffortLimits(const ros::NodeHandle& pnh,
     limits[it->first] = positiveParam(pnh, "effort_limits/" + it->first, 0.0);
   }
   return limits;
-}
-
-std::uint32_t readNoiseSeed(const ros::NodeHandle& pnh) {
-  XmlRpc::XmlRpcValue value;
-  if (!pnh.getParam("noise_seed", value)) return 0;
-  if (value.getType() != XmlRpc::XmlRpcValue::TypeInt || static_cast<int>(value) < 0)
-    throw badParameter(pnh, "noise_seed", "must be an integer >= 0, got " + describe(value));
-  return static_cast<std::uint32_t>(static_cast<int>(value));
 }
 
 hardware::SimulatedActuators makeActuators(const ros::NodeHandle& pnh) {
@@ -148,10 +80,10 @@ hardware::SimulatedActuators makeActuators(const ros::NodeHandle& pnh) {
     limits.push_back(actuator);
   }
   const double command_timeout = positiveParam(pnh, "command_timeout", 0.5);
-  const std::vector<hardware::ActuatorModel> models = readModels(pnh, names);
-  const std::uint32_t noise_seed = readNoiseSeed(pnh);
+  const config::ActuatorModels models = config::loadActuatorModels(RosParameterSource(pnh), names);
   try {
-    return hardware::SimulatedActuators(names, limits, command_timeout, models, noise_seed);
+    return hardware::SimulatedActuators(names, limits, command_timeout, models.models,
+                                        models.noise_seed);
   } catch (const std::invalid_argument& e) {
     // The numbers are checked above, so what is left is the names (empty or duplicate).
     throw badParameter(pnh, "actuator_names", std::string("is invalid: ") + e.what());

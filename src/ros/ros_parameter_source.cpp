@@ -43,6 +43,16 @@ std::optional<std::string> RosParameterSource::text(const std::string& key) cons
   return static_cast<std::string>(value);
 }
 
+std::optional<std::vector<std::string>> RosParameterSource::keys(const std::string& key) const {
+  XmlRpc::XmlRpcValue value;
+  if (!nh_.getParam(key, value)) return std::nullopt;
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeStruct)
+    throwBadType(resolve(key), value, "a dictionary");
+  std::vector<std::string> result;
+  for (auto entry = value.begin(); entry != value.end(); ++entry) result.push_back(entry->first);
+  return result;
+}
+
 std::string RosParameterSource::origin() const { return nh_.getNamespace(); }
 
 std::string RosParameterSource::resolve(const std::string& key) const { return nh_.resolveName(key); }

@@ -10,13 +10,14 @@
 namespace spherical_robots::terrain {
 namespace {
 
-hardware::SimulatedActuators idealActuators(RobotType type, const StackSampling& sampling) {
+hardware::SimulatedActuators actuatorsOf(RobotType type, const StackSampling& sampling) {
   hardware::ActuatorLimits limits;
   limits.max_velocity = sampling.max_velocity;
   limits.max_acceleration = sampling.max_acceleration;
   const std::vector<std::string> names = actuatorNames(type);
   return hardware::SimulatedActuators(names, std::vector<hardware::ActuatorLimits>(names.size(), limits),
-                                      sampling.command_timeout);
+                                      sampling.command_timeout, sampling.actuator_models,
+                                      sampling.noise_seed);
 }
 
 }  // namespace
@@ -41,7 +42,7 @@ SampledTerrainLoop::SampledTerrainLoop(const TerrainKinematics& kinematics,
     : kinematics_(kinematics),
       sampling_((validate(sampling), sampling)),
       tracker_(law, path, kinematics.surface()),
-      actuators_(idealActuators(kinematics.type(), sampling)),
+      actuators_(actuatorsOf(kinematics.type(), sampling)),
       actuator_names_(actuatorNames(kinematics.type())),
       // As the nodes turn their parameters into ros::Duration.
       step_(durationNanoseconds(sampling.plant_step)),

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "spherical_robots/config/actuator_models.hpp"
 #include "spherical_robots/config/robot_description.hpp"
 #include "spherical_robots/config/terrain_config.hpp"
 #include "spherical_robots/config/yaml_parameter_source.hpp"
@@ -58,6 +59,11 @@ TerrainRunSettings settingsFrom(const ParsedOptions& options) {
                                                         : TerrainRunSettings{}.dt;
   settings.log_rate = options.number("log-rate");
   settings.config_dir = configDirectory(options);
+  if (options.given("actuator-models")) {
+    if (settings.loop != TerrainLoop::Sampled)
+      throw UsageError("--actuator-models needs --loop sampled (the continuous loop has no actuators)");
+    settings.actuator_models = options.text("actuator-models");
+  }
   return settings;
 }
 
@@ -77,7 +83,7 @@ both laws, RS tilt limit) is DIR/config/terrain.yaml; the sphere's radius is the
 sphere of DIR/urdf/terrain_robot.urdf.
 
 --loop sampled runs the loop as the launched stack (launch/terrain_stack.launch, clock:=lockstep,
-ideal actuators) samples it, with the core code each node calls and in the order of one
+hardware:=sim with the actuator models of --actuator-models, ideal without) samples it, with the core code each node calls and in the order of one
 lock-step step: the plant advances with the actuators' last measured rates held, the controller
 commands from the state last published, the actuators follow within their limits. Times are
 whole nanoseconds from the stack's first step (t = 0 here), so every row equals the stack's
@@ -147,6 +153,13 @@ TerrainRun::TerrainRun(const TerrainRunSettings& settings) : settings_(settings)
   kinematics_ = std::make_unique<terrain::TerrainKinematics>(*surface_, settings.robot, radius,
                                                              settings.model, scenario.tilt_limit);
   controller_ = config::makePursuitController(settings.law, settings.robot, scenario, radius);
+  sampling_.plant_step = settings.dt;
+  if (!settings.actuator_models.empty()) {
+    const config::ActuatorModels models = config::loadActuatorModels(
+        config::YamlParameterSource(settings.actuator_models), terrain::actuatorNames(settings.robot));
+    sampling_.actuator_models = models.models;
+    sampling_.noise_seed = models.noise_seed;
+  }
 }
 
 template <typename Step, typename RowAt>
@@ -176,9 +189,7 @@ terrain::TrackingSummary TerrainRun::run(std::ostream* csv, Step step, RowAt row
 
 terrain::TrackingSummary TerrainRun::simulate(std::ostream* csv) const {
   if (settings_.loop == TerrainLoop::Sampled) {
-    terrain::StackSampling sampling;
-    sampling.plant_step = settings_.dt;
-    terrain::SampledTerrainLoop loop(*kinematics_, *controller_, *path_, sampling);
+    terrain::SampledTerrainLoop loop(*kinematics_, *controller_, *path_, sampling_);
     loop.step();  // the stack's first step is its t = 0
     return run(csv, [&loop] { loop.step(); }, [&loop](const auto& write) {
       const terrain::SampledTerrainSample s = loop.sample();
@@ -278,6 +289,14 @@ Subcommand terrainCommand() {
        "HZ",
        "CSV rows per second [Hz], > 0; 1/log-rate must be a whole number of steps.",
        formatNumber(defaults.log_rate),
+       false,
+       {}},
+      {"actuator-models",
+       "FILE",
+       "With --loop sampled: the hardware interface's actuator models, the YAML file a stack\n"
+       "takes as actuator_models:= (e.g. config/actuators_realistic.yaml: lag, dead time,\n"
+       "encoder resolution, seeded velocity noise). Default: ideal actuators.",
+       "",
        false,
        {}},
       configOption(),

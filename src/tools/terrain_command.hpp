@@ -33,6 +33,7 @@ struct TerrainRunSettings {
   double dt = 0.005;        ///< RK4 step [s] > 0 (continuous); the plant's step (sampled)
   double log_rate = 10.0;   ///< CSV rows per second [Hz]; 1/log_rate a whole number of steps
   std::string config_dir;   ///< holds config/terrain.yaml and urdf/terrain_robot.urdf
+  std::string actuator_models;  ///< sampled: a YAML file of actuator models; empty: ideal
 };
 
 /// A checked, ready-to-run scenario: the surface, path, kinematics and controller (of the
@@ -78,6 +79,7 @@ class TerrainRun {
   std::unique_ptr<terrain::ReferencePath> path_;
   std::unique_ptr<terrain::TerrainKinematics> kinematics_;
   std::unique_ptr<terrain::PursuitController> controller_;
+  terrain::StackSampling sampling_;
 };
 
 /// The subcommand's option table and run function, for runSphereSim.

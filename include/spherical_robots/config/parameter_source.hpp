@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace spherical_robots::config {
 
@@ -14,6 +15,9 @@ class ParameterSource {
   virtual std::optional<double> number(const std::string& key) const = 0;
   /// The string at key, nullopt if absent. @throw std::invalid_argument if present but not a string.
   virtual std::optional<std::string> text(const std::string& key) const = 0;
+  /// The keys of the dictionary at key ("" the root), nullopt if absent.
+  /// @throw std::invalid_argument if present but not a dictionary.
+  virtual std::optional<std::vector<std::string>> keys(const std::string& key) const = 0;
   /// Where the values come from, for error messages ("config/terrain.yaml", "/robot1/controller").
   virtual std::string origin() const = 0;
 };

@@ -14,6 +14,8 @@
 // SimulatedActuators), so a run equals the stack's value for value (test/batch_equality.test).
 
 #include <Eigen/Geometry>
+#include <cstdint>
+#include <vector>
 
 #include "spherical_robots/core/stamp.hpp"
 #include "spherical_robots/hardware/simulated_actuators.hpp"
@@ -33,6 +35,10 @@ struct StackSampling {
   double max_velocity = 20.0;      ///< hardware_interface ~max_velocity [rad/s]
   double max_acceleration = 50.0;  ///< hardware_interface ~max_acceleration [rad/s^2]
   double command_timeout = 0.5;    ///< hardware_interface ~command_timeout [s]
+  /// hardware_interface's actuator models (actuator_models:=FILE), one per actuator in
+  /// actuatorNames() order, and their noise seed; none: ideal actuators.
+  std::vector<hardware::ActuatorModel> actuator_models;
+  std::uint32_t noise_seed = 0;
 };
 
 /// @throw std::invalid_argument naming the first field that is not finite and > 0.
