@@ -33,4 +33,9 @@ Nanoseconds durationNanoseconds(double seconds) {
   return sec * kNanosecondsPerSecond + nsec;
 }
 
+bool withinTimeout(Nanoseconds accepted, Nanoseconds now, double timeout) {
+  const double age = stampSeconds(now - accepted);
+  return age >= 0.0 && age <= timeout;
+}
+
 }  // namespace spherical_robots

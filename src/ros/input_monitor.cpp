@@ -1,5 +1,7 @@
 #include "spherical_robots/ros/input_monitor.hpp"
 
+#include "spherical_robots/core/stamp.hpp"
+
 #include <diagnostic_msgs/DiagnosticStatus.h>
 #include <ros/console.h>
 
@@ -58,9 +60,8 @@ void InputMonitor::reject(const std::string& reason) {
 }
 
 bool InputMonitor::fresh(const ros::Time& now) const {
-  if (accepted_ == 0) return false;
-  const double age = (now - last_accepted_).toSec();
-  return age >= 0.0 && age <= timeout_;
+  return accepted_ != 0 && withinTimeout(static_cast<Nanoseconds>(last_accepted_.toNSec()),
+                                         static_cast<Nanoseconds>(now.toNSec()), timeout_);
 }
 
 HealthLevel InputMonitor::health() { return health_.level(wallSeconds()); }

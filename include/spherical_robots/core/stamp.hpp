@@ -18,4 +18,7 @@ double stampSeconds(Nanoseconds ns);
 /// a 32-bit count of seconds.
 Nanoseconds durationNanoseconds(double seconds);
 
+/// Whether an input accepted at `accepted` is still fresh at `now`: 0 <= age <= timeout [s].
+bool withinTimeout(Nanoseconds accepted, Nanoseconds now, double timeout);
+
 }  // namespace spherical_robots
