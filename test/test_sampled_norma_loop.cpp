@@ -185,7 +185,11 @@ TEST(SampledNormaLoop, RejectsBadConfigurations) {
   EXPECT_INVALID_ARGUMENT(norma::SampledNormaLoop(parameters, with([](Config& c) { c.step = 6.0; })),
                           "max_clock_step");
   EXPECT_INVALID_ARGUMENT(
-      norma::SampledNormaLoop(parameters, with([](Config& c) { c.step = 1e-12; })), "1 ns");
+      norma::SampledNormaLoop(parameters, with([](Config& c) {
+                                             c.step = 1e-12;
+                                             c.duration = 0.0;
+                                           })),
+      "1 ns");
   EXPECT_INVALID_ARGUMENT(
       norma::SampledNormaLoop(parameters, with([&](Config& c) { c.step = nan; })), "step");
   EXPECT_INVALID_ARGUMENT(
@@ -203,6 +207,8 @@ TEST(SampledNormaLoop, RejectsBadConfigurations) {
       "timeout");
   EXPECT_INVALID_ARGUMENT(
       norma::SampledNormaLoop(parameters, with([&](Config& c) { c.initial_psi = nan; })), "psi");
+  EXPECT_INVALID_ARGUMENT(
+      norma::SampledNormaLoop(parameters, with([](Config& c) { c.duration = 1e300; })), "1e+300");
   EXPECT_INVALID_ARGUMENT(norma::runSampledLoop(parameters, {}, 0), "steps per logged row");
 
   norma::SampledNormaLoop loop(parameters, with([](Config& c) { c.duration = 0.001; }));

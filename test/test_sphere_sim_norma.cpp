@@ -230,6 +230,7 @@ TEST_F(SphereSimNormaTest, BadInputExitsWithoutOutput) {
       {"--loop sampled --command-timeout -1", 4},
       {"--loop sampled --state-timeout nan", 4},
       {"--loop sampled --duration -1", 4},
+      {"--loop sampled --duration 1e300", 4},                 // more steps than a run allows
   };
   for (const auto& [args, status] : cases) {
     const Result r = norma(args);

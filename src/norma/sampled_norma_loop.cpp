@@ -1,6 +1,7 @@
 #include "spherical_robots/norma/sampled_norma_loop.hpp"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -21,25 +22,38 @@ hardware::SimulatedActuators idealEffortActuators(const EffortLimits& limits,
   return hardware::SimulatedActuators(kActuators, {torque, force}, command_timeout);
 }
 
-/// The step as the lock-step clock takes it (ros::Duration(step)), after checking it.
-Nanoseconds checkedStepNanoseconds(double step) {
-  requirePositive(step, "step [s]");
-  if (step > kDefaultMaxClockStep) {
-    throw std::invalid_argument("step [s] " + std::to_string(step) + " is longer than a node's "
-                                "max_clock_step (" + std::to_string(kDefaultMaxClockStep) +
-                                " s): the stack would take each step for a clock jump");
-  }
-  const Nanoseconds ns = durationNanoseconds(step);
-  if (ns <= 0) throw std::invalid_argument("step [s] " + std::to_string(step) + " is under 1 ns");
-  return ns;
-}
-
 const SampledLoopConfig& validated(const SampledLoopConfig& config) {
+  requirePositive(config.step, "step [s]");
+  if (config.step > kDefaultMaxClockStep) {
+    std::ostringstream what;
+    what << "step [s] " << config.step << " is longer than a node's max_clock_step ("
+         << kDefaultMaxClockStep << " s): the stack would take each step for a clock jump";
+    throw std::invalid_argument(what.str());
+  }
   requirePositive(config.state_timeout, "state_timeout [s]");
   requireFinite(config.duration, "duration [s]");
   if (config.duration < 0.0) throw std::invalid_argument("duration [s] must be >= 0");
+  // Bounded before anything runs: 1e300 s is a request, not a run.
+  if (!(config.duration / config.step <= kMaxLoggedSamples)) {
+    std::ostringstream what;
+    what << "duration " << config.duration << " s is " << config.duration / config.step
+         << " steps of " << config.step << " s, more than the " << kMaxLoggedSamples
+         << " a run allows";
+    throw std::invalid_argument(what.str());
+  }
   requireFinite(config.initial_psi, "initial psi [rad]");
   return config;
+}
+
+/// The step as the lock-step clock takes it (ros::Duration(step)).
+Nanoseconds checkedStepNanoseconds(double step) {
+  const Nanoseconds ns = durationNanoseconds(step);
+  if (ns <= 0) {
+    std::ostringstream what;
+    what << "step [s] " << step << " is under 1 ns";
+    throw std::invalid_argument(what.str());
+  }
+  return ns;
 }
 
 NormaMeasurement measurementOf(const NormaState& state) {
@@ -109,9 +123,11 @@ const SampledStep& SampledNormaLoop::step() {
 
 std::vector<NormaSample> runSampledLoop(const NormaParameters& parameters,
                                         const SampledLoopConfig& config, long steps_per_row) {
-  if (steps_per_row < 1)
-    throw std::invalid_argument("steps per logged row " + std::to_string(steps_per_row) +
-                                " must be >= 1");
+  if (steps_per_row < 1) {
+    std::ostringstream what;
+    what << "steps per logged row " << steps_per_row << " must be >= 1";
+    throw std::invalid_argument(what.str());
+  }
   SampledNormaLoop loop(parameters, config);
   std::vector<NormaSample> samples;
   Nanoseconds first = 0;
