@@ -11,7 +11,8 @@ only once this checker is connected, so it sees every state from the first. In l
 results do not depend on the machine's load: there is no timing assert here.
 
 As a rostest node (test/norma_batch_equality.test) and from a shell alike:
-    batch_equality_check.py --stack norma --duration 60 [--bound 1e-9] [--sphere-sim PATH]
+    batch_equality_check.py --stack norma --duration 60 [--bound 1e-9] [--sphere-sim PATH] \
+        [-- launch args, e.g. nodelet:=true]
 """
 import argparse
 import csv
@@ -131,14 +132,14 @@ def wait_for_master(uri, timeout):
         time.sleep(0.2)
 
 
-def run_stack(case, duration, workdir):
+def run_stack(case, duration, extra_args, workdir):
     """Launches the stack on its own master, collects its states until it ends. Returns them and
     the wall time the run took."""
     port = free_port()
     uri = 'http://localhost:%d' % port
     env = dict(os.environ, ROS_MASTER_URI=uri, ROS_HOME=workdir)
     command = (['roslaunch', '-p', str(port), launch_file(case.launch)] + case.launch_args +
-               ['wait_for_subscribers:=2'])  # its controller and this checker
+               extra_args + ['wait_for_subscribers:=2'])  # its controller and this checker
     log_path = os.path.join(workdir, 'stack.log')
     started = time.time()
     with open(log_path, 'w') as log:
@@ -166,10 +167,10 @@ def run_stack(case, duration, workdir):
     return sorted(collector.states, key=lambda s: s[0]), wall
 
 
-def compare(case_name, duration, bound, sphere_sim, workdir):
+def compare(case_name, duration, bound, sphere_sim, extra_args, workdir):
     case = STACKS[case_name](duration)
     rows, batch_wall = batch_rows(sphere_sim, case, workdir)
-    states, stack_wall = run_stack(case, duration, workdir)
+    states, stack_wall = run_stack(case, duration, extra_args, workdir)
     report = ['%s: %d states from the stack (%.1f s of wall time), %d rows from sphere_sim '
               '(%.2f s)' % (case_name, len(states), stack_wall, len(rows), batch_wall)]
     if not states:
@@ -213,14 +214,19 @@ def parse(argv):
                         help='largest difference allowed in any length [m]')
     parser.add_argument('--sphere-sim', help='the sphere_sim to run (default: the package\'s)')
     parser.add_argument('--keep', action='store_true', help='keep the work directory')
-    return parser.parse_known_args(argv)[0]  # rostest adds __name:=, --gtest_output=, ...
+    parser.add_argument('launch_args', nargs='*', metavar='ARG',
+                        help='further launch arguments, e.g. nodelet:=true')
+    options = parser.parse_known_args(argv)[0]  # rostest adds --gtest_output=, --text
+    # and the remappings __name:=, __log:= of a node
+    options.launch_args = [a for a in options.launch_args if not a.startswith('__')]
+    return options
 
 
 def check(options):
     workdir = tempfile.mkdtemp(prefix='batch_equality.')
     try:
         print(compare(options.stack, options.duration, options.bound,
-                      options.sphere_sim or find_sphere_sim(), workdir))
+                      options.sphere_sim or find_sphere_sim(), options.launch_args, workdir))
     except AssertionError:
         print('work directory kept: %s' % workdir)
         raise
