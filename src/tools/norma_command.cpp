@@ -219,7 +219,8 @@ is held until the next step; the hardware interface clamps it to --max-torque an
 ros::Time does. Its X, Y, psi, q and q_dot equal the stack's norma_state at the same time since
 its first stamp, bit for bit (test/norma_batch_equality.test). The defaults of --max-torque,
 --max-force, --command-timeout and --state-timeout are the stack's; --rtol and --atol do not
-apply. A state that turns non-finite ends the run (exit 4); the stack's plant would hold it.
+apply. --duration 0 runs the first step only. A state that turns non-finite ends the run (exit
+4); the stack's plant would hold it.
 
 CSV columns (SI units, radians; one row every 1/log-rate s from t = 0 through the duration
 inclusive):
@@ -281,7 +282,7 @@ Subcommand normaCommand() {
        "max_force).", "200", false, {}},
       {"command-timeout", "SECONDS", "--loop sampled: the hardware interface's watchdog [s], > 0 "
        "(the stack's command_timeout).", "0.1", false, {}},
-      {"state-timeout", "SECONDS", "--loop sampled: the plant drives with no effort once the last "
+      {"state-timeout", "SECONDS", "--loop sampled: no effort drives the plant once the last "
        "actuator state is older than this [s], > 0 (the stack's state_timeout).", "0.05", false,
        {}},
       {"open-loop", "", "Zero inputs from --q0, --qd0 instead of the closed loop.", "", false, {}},
