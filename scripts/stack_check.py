@@ -73,7 +73,7 @@ def tracking_in_window(errors, first_step=None):
 
 def batch_window():
     """The same figures from `sphere_sim terrain --loop sampled` on this stack's scenario: what a
-    terrain stack in lock-step with ideal actuators publishes, value for value (docs/lockstep.md,
+    terrain stack in lock-step publishes, value for value (docs/lockstep.md,
     "Equal to the batch run"), so its bound is the batch run's figure itself."""
     import csv
     import roslib.packages
@@ -84,7 +84,9 @@ def batch_window():
                     '--robot', controller['robot_type'], '--path', controller['path'],
                     '--law', controller['law'], '--model', plant['contact_model'],
                     '--duration', '%g' % SETTLE[1], '--log-rate', '50',
-                    '--config', rospkg.RosPack().get_path(PKG), '--out', out],
+                    '--config', rospkg.RosPack().get_path(PKG), '--out', out] +
+                   (['--actuator-models', rospy.get_param('~actuator_models')]
+                    if rospy.has_param('~actuator_models') else []),
                    check=True, stdout=subprocess.DEVNULL)
     with open(out) as f:
         window = [float(r['e_norm']) for r in csv.DictReader(f)
@@ -94,8 +96,9 @@ def batch_window():
 
 
 def assert_tracking(case, errors):
-    """~batch true (lock-step, ideal actuators): |e_t| over SETTLE equals the batch run's to 1e-9;
-    otherwise below ~mean_bound and ~max_bound [m]."""
+    """~batch true (a terrain stack in lock-step, hardware:=sim or loopback; ~actuator_models the
+    file the stack's actuator_models:= names, if any): |e_t| over SETTLE equals the batch run's to
+    1e-9; otherwise below ~mean_bound and ~max_bound [m]."""
     if rospy.get_param('~batch', False):
         mean, worst, count = tracking_in_window(errors, rospy.get_param('terrain_kinematics/step', 0.01))
         batch = batch_window()

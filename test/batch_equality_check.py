@@ -1,126 +1,289 @@
 #!/usr/bin/env python3
-"""Runs a stack in lock-step on its own ROS master, recorded to a bag, runs `sphere_sim` on the
-same scenario with the stack's sampling (--loop sampled), and asserts that every message of the
-stack equals the batch run's row of the same time since the first stamp, within 1e-9
-(docs/lockstep.md, "Equal to the batch run"; issue 19 item 4). The goal is exactly 0: the batch
-run calls the nodes' own core code in the order of a lock-step step.
+"""Runs a stack in lock-step (the default clock) and `sphere_sim` on the same scenario as the
+stack samples it, and asserts that every state the stack publishes equals the batch run's CSV row
+at the same time since the first stamp, within a bound (issue 19 item 4; docs/lockstep.md, "Equal
+to the batch run"). The goal is bit-identity: the batch runs the nodes' own core code in their
+order with their times, so the figure reported is normally 0.
 
-As a rostest node (test/batch_equality_terrain.test) the parameters are private (~stack,
-~duration, ~args); from a shell:
-    batch_equality_check.py --stack terrain --duration 200 [-- launch args]
+The stack runs on a ROS master of its own (a free port) while this process subscribes to its
+state topic with an unbounded queue; the launch argument wait_for_subscribers makes time start
+only once this checker is connected, so it sees every state from the first. In lock-step the
+results do not depend on the machine's load: there is no timing assert here.
+
+As a rostest node (test/terrain_batch_equality.test, test/norma_batch_equality.test) and from a
+shell alike:
+    batch_equality_check.py --stack terrain|norma [--duration S] [--bound 1e-9] \
+        [--sphere-sim PATH] [-- launch args, e.g. robot:=RS path:=diamond nodelet:=true]
+Launch arguments the batch run also takes (terrain: robot, path, model, law, actuator_models)
+are passed to sphere_sim too.
 """
 import argparse
 import csv
 import os
 import shutil
+import socket
 import subprocess
 import sys
 import tempfile
+import threading
+import time
 import unittest
 
-import rosbag
+import rosgraph
+import roslib.packages
 import rospkg
 
-from lockstep_repeat_check import run_stack
-
 PKG = 'spherical_robots'
-BOUND = 1e-9
 
 
-def sphere_sim():
-    """The batch tool of the package the stack runs from (installed beside this program)."""
-    here = os.path.dirname(os.path.realpath(__file__))
-    candidate = os.path.join(here, 'sphere_sim')
-    if os.access(candidate, os.X_OK):
-        return candidate
-    import roslib.packages
-    return roslib.packages.find_node(PKG, 'sphere_sim')[0]
+class StackCase:
+    """What is compared for one stack: its launch file and arguments, its namespace, the batch run
+    that replays it, and per topic which message field equals which CSV column (with its unit:
+    the bound applies to lengths in metres; angles and rates are reported beside)."""
 
-
-def read_csv(path):
-    """Rows by time since the first step [ns] (the CSV's t, written exactly as the stack's)."""
-    with open(path) as f:
-        rows = list(csv.DictReader(f))
-    return {int(round(float(r['t']) * 1e9)): {k: float(v) for k, v in r.items()} for r in rows}
-
-
-def terrain_messages(bag_path, ns):
-    """Per topic: time since the first terrain_state [ns] -> {CSV column: value}."""
-    states, errors = {}, {}
-    with rosbag.Bag(bag_path) as bag:
-        for topic, msg, _ in bag.read_messages(topics=['/%s/terrain_state' % ns,
-                                                       '/%s/tracking_error' % ns]):
-            stamp = msg.header.stamp.to_nsec()
-            if topic.endswith('terrain_state'):
-                states[stamp] = {
-                    'x0': msg.contact_point.x, 'y0': msg.contact_point.y,
-                    'z0': msg.contact_point.z, 'cx': msg.centre.x, 'cy': msg.centre.y,
-                    'cz': msg.centre.z, 'psi': msg.psi, 'phi': msg.phi,
-                    'roll_rate': msg.roll_rate, 'lateral_rate': msg.lateral_rate,
-                    'turn_rate': msg.turn_rate}
-            else:
-                errors[stamp] = {'xd': msg.desired.x, 'yd': msg.desired.y, 'zd': msg.desired.z,
-                                 'e_norm': msg.error_norm, 'zeta': msg.zeta}
-    first = min(states)
-    return ({k - first: v for k, v in states.items()}, {k - first: v for k, v in errors.items()})
+    def __init__(self, launch, launch_args, ns, topics, sphere_sim_args):
+        self.launch = launch
+        self.launch_args = launch_args
+        self.ns = ns
+        self.topics = topics  # [(topic, message type, [(name, value of a message, column, unit)])]
+        self.sphere_sim_args = sphere_sim_args
 
 
 def launch_value(args, name, default):
-    for a in args:
-        if a.startswith(name + ':='):
-            return a.split(':=', 1)[1]
+    """The value of launch argument `name` among args (NAME:=VALUE), or default."""
+    for arg in args:
+        if arg.startswith(name + ':='):
+            return arg.split(':=', 1)[1]
     return default
 
 
-def compare_terrain(duration, extra_args, workdir):
-    bag = os.path.join(workdir, 'terrain.bag')
-    run_stack('terrain', duration, extra_args, bag, 0)
-    states, errors = terrain_messages(bag, launch_value(extra_args, 'ns', 'sphere'))
-    out = os.path.join(workdir, 'terrain.csv')
-    command = [sphere_sim(), 'terrain', '--loop', 'sampled', '--duration', '%g' % duration,
-               '--log-rate', '50', '--out', out,
-               '--robot', launch_value(extra_args, 'robot', '3R'),
-               '--path', launch_value(extra_args, 'path', 'circle'),
-               '--model', launch_value(extra_args, 'model', 'paper'),
-               '--law', launch_value(extra_args, 'law', 'smooth'),
-               '--config', rospkg.RosPack().get_path(PKG)]
-    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
-    rows = read_csv(out)
-    report = []
-    for topic, messages in (('terrain_state', states), ('tracking_error', errors)):
-        expected = len(rows)
-        missing = sorted(set(rows) - set(messages))
-        if len(messages) != expected or missing:
-            raise AssertionError('%s: %d messages, %d batch rows; first missing at %s s'
-                                 % (topic, len(messages), expected,
-                                    missing[0] * 1e-9 if missing else '-'))
-        worst, where, column = 0.0, 0, ''
-        for stamp, fields in messages.items():
-            for name, value in fields.items():
-                difference = abs(value - rows[stamp][name])
-                if difference > worst:
-                    worst, where, column = difference, stamp, name
-        report.append('%-15s %6d messages, largest difference from the batch run %.3g (%s at %g s)'
-                      % (topic, len(messages), worst, column or '-', where * 1e-9))
-        if not worst <= BOUND:
-            raise AssertionError('the stack differs from its batch run beyond %g:\n%s'
-                                 % (BOUND, '\n'.join(report)))
+def terrain_case(duration, extra_args):
+    from spherical_robots.msg import TerrainState, TrackingError
+
+    state_fields = ([('contact_point.' + a, lambda m, a=a: getattr(m.contact_point, a), a + '0', 'm')
+                     for a in 'xyz'] +
+                    [('centre.' + a, lambda m, a=a: getattr(m.centre, a), 'c' + a, 'm') for a in 'xyz'] +
+                    [(name, lambda m, name=name: getattr(m, name), name, unit)
+                     for name, unit in (('psi', 'rad'), ('phi', 'rad'), ('roll_rate', 'rad/s'),
+                                        ('lateral_rate', 'rad/s'), ('turn_rate', 'rad/s'))])
+    error_fields = ([('desired.' + a, lambda m, a=a: getattr(m.desired, a), a + 'd', 'm') for a in 'xyz'] +
+                    [('error_norm', lambda m: m.error_norm, 'e_norm', 'm'),
+                     ('zeta', lambda m: m.zeta, 'zeta', 'rad')])
+    sphere_sim_args = ['terrain', '--loop', 'sampled', '--duration', '%g' % duration,
+                       '--log-rate', '50', '--config', rospkg.RosPack().get_path(PKG)]
+    for name, option, default in (('robot', '--robot', '3R'), ('path', '--path', 'circle'),
+                                  ('model', '--model', 'paper'), ('law', '--law', 'smooth')):
+        sphere_sim_args += [option, launch_value(extra_args, name, default)]
+    models = launch_value(extra_args, 'actuator_models', '')
+    if models:
+        sphere_sim_args += ['--actuator-models', models]
+    return StackCase(
+        launch='terrain_stack.launch', launch_args=['duration:=%g' % duration],
+        ns=launch_value(extra_args, 'ns', 'sphere'),
+        topics=[('terrain_state', TerrainState, state_fields),
+                ('tracking_error', TrackingError, error_fields)],
+        sphere_sim_args=sphere_sim_args)
+
+
+def norma_case(duration, extra_args):
+    from spherical_robots.msg import NormaState
+    fields = [('x', lambda m: m.x, 'X', 'm'), ('y', lambda m: m.y, 'Y', 'm'),
+              ('psi', lambda m: m.psi, 'psi', 'rad')]
+    for i, (coordinate, unit) in enumerate([('theta', 'rad'), ('alpha', 'rad'), ('phi', 'rad'),
+                                            ('delta', 'm')]):
+        fields.append(('q[%d]' % i, lambda m, i=i: m.q[i], coordinate, unit))
+        fields.append(('qd[%d]' % i, lambda m, i=i: m.qd[i], coordinate + 'd', unit + '/s'))
+    return StackCase(
+        launch='norma_stack.launch',
+        launch_args=['controller:=tracking', 'duration:=%g' % duration],
+        ns=launch_value(extra_args, 'ns', 'norma'), topics=[('norma_state', NormaState, fields)],
+        sphere_sim_args=['norma', '--loop', 'sampled', '--controller', 'tracking',
+                         '--duration', '%g' % duration, '--log-rate', '1000'])
+
+
+STACKS = {'terrain': terrain_case, 'norma': norma_case}
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(('localhost', 0))
+        return s.getsockname()[1]
+
+
+def launch_file(name):
+    """By its full path, as $(find) resolves it (lockstep_repeat_check.py says why)."""
+    return os.path.join(rospkg.RosPack().get_path(PKG), 'launch', name)
+
+
+def find_sphere_sim():
+    found = roslib.packages.find_node(PKG, 'sphere_sim')
+    if not found:
+        raise AssertionError('sphere_sim of %s not found (build and source the workspace, or '
+                             'pass --sphere-sim PATH)' % PKG)
+    return found[0]
+
+
+def batch_rows(sphere_sim, case, workdir):
+    """The CSV rows by time since the first step [ns]."""
+    out = os.path.join(workdir, 'batch.csv')
+    command = [sphere_sim] + case.sphere_sim_args + ['--out', out]
+    started = time.time()
+    run = subprocess.run(command, capture_output=True, text=True)
+    if run.returncode != 0:
+        raise AssertionError('%s failed with %d: %s' % (' '.join(command), run.returncode,
+                                                        run.stderr.strip()))
+    with open(out) as f:
+        rows = {int(round(float(row['t']) * 1e9)): row for row in csv.DictReader(f)}
+    return rows, time.time() - started
+
+
+class StateCollector:
+    """Every message of the compared topics, in arrival order, as (stamp [ns], message) per topic."""
+
+    def __init__(self, case, master_uri):
+        import rospy
+        os.environ['ROS_MASTER_URI'] = master_uri
+        rospy.init_node('batch_equality_check', anonymous=True, disable_signals=True)
+        self.messages = {topic: [] for topic, _, _ in case.topics}
+        self.lock = threading.Lock()
+        self.subscribers = [
+            rospy.Subscriber('/%s/%s' % (case.ns, topic), message_type, self.on_message,
+                             callback_args=topic, queue_size=None, tcp_nodelay=True)
+            for topic, message_type, _ in case.topics]
+
+    def on_message(self, msg, topic):
+        with self.lock:
+            self.messages[topic].append((msg.header.stamp.to_nsec(), msg))
+
+    def count(self):
+        with self.lock:
+            return sum(len(m) for m in self.messages.values())
+
+
+def wait_for_master(uri, timeout):
+    master = rosgraph.Master('/batch_equality_check', master_uri=uri)
+    deadline = time.time() + timeout
+    while not master.is_online():
+        if time.time() > deadline:
+            raise AssertionError('the stack\'s master %s did not come up in %g s' % (uri, timeout))
+        time.sleep(0.2)
+
+
+def run_stack(case, duration, extra_args, workdir):
+    """Launches the stack on its own master, collects its states until it ends. Returns them and
+    the wall time the run took."""
+    port = free_port()
+    uri = 'http://localhost:%d' % port
+    env = dict(os.environ, ROS_MASTER_URI=uri, ROS_HOME=workdir)
+    command = (['roslaunch', '-p', str(port), launch_file(case.launch)] + case.launch_args +
+               extra_args + ['wait_for_subscribers:=2'])  # its controller and this checker
+    log_path = os.path.join(workdir, 'stack.log')
+    started = time.time()
+    with open(log_path, 'w') as log:
+        child = subprocess.Popen(command, env=env, stdout=log, stderr=subprocess.STDOUT)
+        try:
+            wait_for_master(uri, 60)
+            collector = StateCollector(case, uri)
+            returncode = child.wait(timeout=120 + 20 * duration)
+        finally:
+            if child.poll() is None:
+                child.terminate()
+                child.wait()
+    wall = time.time() - started
+    if returncode != 0:
+        with open(log_path) as log:
+            tail = log.readlines()[-20:]
+        raise AssertionError('%s failed with %d; the end of its log %s:\n%s'
+                             % (' '.join(command), returncode, log_path, ''.join(tail)))
+    # The last messages may still be in this process's queue: wait until none has come for 2 s.
+    last = -1
+    while collector.count() != last:
+        last = collector.count()
+        time.sleep(2.0)
+    for subscriber in collector.subscribers:
+        subscriber.unregister()
+    return {topic: sorted(m, key=lambda s: s[0]) for topic, m in collector.messages.items()}, wall
+
+
+def compare(case_name, duration, bound, sphere_sim, extra_args, workdir):
+    case = STACKS[case_name](duration, extra_args)
+    rows, batch_wall = batch_rows(sphere_sim, case, workdir)
+    messages, stack_wall = run_stack(case, duration, extra_args, workdir)
+    report = ['%s: %s from the stack (%.1f s of wall time), %d rows from sphere_sim (%.2f s)'
+              % (case_name, ', '.join('%d %s' % (len(messages[t]), t) for t, _, _ in case.topics),
+                 stack_wall, len(rows), batch_wall)]
+    if not all(messages.values()):
+        raise AssertionError('a topic had no message\n' + '\n'.join(report))
+    # Time since the stack's first step: the first state, which the checker sees (time starts
+    # only once it is connected).
+    first = messages[case.topics[0][0]][0][0]
+    length_max = 0.0
+    for topic, _, fields in case.topics:
+        largest = {}  # field -> (difference, time since the first stamp [ns])
+        missing = []
+        for stamp, msg in messages[topic]:
+            row = rows.get(stamp - first)
+            if row is None:
+                missing.append(stamp - first)
+                continue
+            for name, value, column, _ in fields:
+                difference = abs(value(msg) - float(row[column]))
+                if difference > largest.get(name, (-1.0, 0))[0]:
+                    largest[name] = (difference, stamp - first)
+        report.append(' %s:' % topic)
+        for name, _, column, unit in fields:
+            difference, at = largest.get(name, (float('nan'), 0))
+            report.append('  %-16s (%-12s) max |stack - batch| %.3g %s at %.3f s'
+                          % (name, column, difference, unit, at * 1e-9))
+        length_max = max([length_max] + [largest[name][0] for name, _, _, unit in fields
+                                         if unit == 'm' and name in largest])
+        if missing:
+            raise AssertionError('%d %s messages at times the batch run has no row for (the first '
+                                 'at %.3f s)\n%s' % (len(missing), topic, missing[0] * 1e-9,
+                                                     '\n'.join(report)))
+        stamps = set(m[0] for m in messages[topic])
+        if len(messages[topic]) != len(rows) or len(stamps) != len(rows):
+            raise AssertionError('the stack published %d %s messages (%d stamps), the batch run '
+                                 'has %d rows: a message was lost, repeated or is extra\n%s'
+                                 % (len(messages[topic]), topic, len(stamps), len(rows),
+                                    '\n'.join(report)))
+    report.append('max difference in metres: %.3g m (bound %g m)' % (length_max, bound))
+    if length_max > bound:
+        raise AssertionError('stack and batch run differ\n' + '\n'.join(report))
     return '\n'.join(report)
 
 
-STACKS = {'terrain': compare_terrain}
+def parse(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
+    parser.add_argument('--stack', choices=sorted(STACKS), default='terrain')
+    parser.add_argument('--duration', type=float, default=60.0, help='simulated seconds')
+    parser.add_argument('--bound', type=float, default=1e-9,
+                        help='largest difference allowed in any length [m]')
+    parser.add_argument('--sphere-sim', help='the sphere_sim to run (default: the package\'s)')
+    parser.add_argument('--keep', action='store_true', help='keep the work directory')
+    parser.add_argument('launch_args', nargs='*', metavar='ARG',
+                        help='further launch arguments, e.g. nodelet:=true')
+    options = parser.parse_known_args(argv)[0]  # rostest adds --gtest_output=, --text
+    # and the remappings __name:=, __log:= of a node
+    options.launch_args = [a for a in options.launch_args if not a.startswith('__')]
+    return options
+
+
+def check(options):
+    workdir = tempfile.mkdtemp(prefix='batch_equality.')
+    try:
+        print(compare(options.stack, options.duration, options.bound,
+                      options.sphere_sim or find_sphere_sim(), options.launch_args, workdir))
+    except AssertionError:
+        print('work directory kept: %s' % workdir)
+        raise
+    if not options.keep:
+        shutil.rmtree(workdir, ignore_errors=True)
 
 
 class BatchEquality(unittest.TestCase):
-    def test_stack_equals_its_batch_run(self):
-        import rospy
-        rospy.init_node('batch_equality_check', anonymous=True)
-        stack = rospy.get_param('~stack', 'terrain')
-        duration = float(rospy.get_param('~duration', 200.0))
-        extra_args = str(rospy.get_param('~args', '')).split()
-        workdir = tempfile.mkdtemp(prefix='batch_equality.')
-        print(STACKS[stack](duration, extra_args, workdir))
-        shutil.rmtree(workdir, ignore_errors=True)
+    def test_every_state_equals_the_batch_run(self):
+        check(parse(sys.argv[1:]))
 
 
 def main():
@@ -128,18 +291,10 @@ def main():
         import rostest
         rostest.rosrun(PKG, 'batch_equality_check', BatchEquality)
         return
-    parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
-    parser.add_argument('--stack', choices=sorted(STACKS), default='terrain')
-    parser.add_argument('--duration', type=float, default=200.0)
-    parser.add_argument('args', nargs='*', help='launch arguments, e.g. robot:=RS path:=diamond')
-    options = parser.parse_args()
-    workdir = tempfile.mkdtemp(prefix='batch_equality.')
     try:
-        print(STACKS[options.stack](options.duration, options.args, workdir))
-        print('equal: every message of the stack equals its batch run')
+        check(parse(sys.argv[1:]))
     except AssertionError as e:
-        sys.exit('NOT equal: %s (files in %s)' % (e, workdir))
-    shutil.rmtree(workdir, ignore_errors=True)
+        sys.exit('NOT equal: %s' % e)
 
 
 if __name__ == '__main__':

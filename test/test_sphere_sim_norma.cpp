@@ -165,6 +165,41 @@ TEST_F(SphereSimNormaTest, WarnsOnceWhenSliderLeavesShaft) {
   EXPECT_GT(beyond, 0.0);
 }
 
+// --loop sampled: a row per 1 ms step from the first, t since the first step; at rest on the path
+// at the first, where the paper's first command T = 10 sqrt(0.0013) / 0.2 (as in the continuous
+// run) is applied; clamped at --max-torque; and with --state-timeout below the step every effort
+// is stale at the plant, so the robot stays exactly at rest.
+TEST_F(SphereSimNormaTest, SampledLoopRunsTheStacksSteps) {
+  const Result r = norma("--loop sampled --duration 0.01 --log-rate 1000");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.header, kColumns);
+  ASSERT_EQ(r.rows.size(), 11u);
+  for (std::size_t i = 0; i < r.rows.size(); ++i) EXPECT_NEAR(r.at(i, "t"), 0.001 * i, 1e-15);
+  for (const char* zero : {"theta", "alpha", "phi", "delta", "thetad", "X", "Y", "err", "F"}) {
+    EXPECT_EQ(r.at(0, zero), 0.0) << zero;
+  }
+  EXPECT_NEAR(r.at(0, "psi"), std::atan2(0.03, 0.02), 1e-15);
+  EXPECT_NEAR(r.at(0, "T"), 10.0 * std::sqrt(0.0013) / 0.2, 1e-12);
+  EXPECT_GT(r.at(10, "X"), 0.0);
+  EXPECT_NE(r.out.find("sampled loop"), std::string::npos) << r.out;
+
+  const Result clamped = norma("--loop sampled --duration 0.01 --log-rate 1000 --max-torque 1");
+  ASSERT_EQ(clamped.status, 0) << clamped.err;
+  EXPECT_EQ(clamped.at(0, "T"), 1.0);
+
+  const Result stale = norma("--loop sampled --duration 1 --log-rate 100 --state-timeout 0.0005");
+  ASSERT_EQ(stale.status, 0) << stale.err;
+  ASSERT_EQ(stale.rows.size(), 101u);
+  for (const char* zero : {"theta", "alpha", "phi", "delta", "X", "Y"}) {
+    EXPECT_EQ(stale.at(100, zero), 0.0) << zero;
+  }
+
+  const Result slow = norma("--loop sampled --duration 2");  // the closed loop's 1 Hz rows
+  ASSERT_EQ(slow.status, 0) << slow.err;
+  ASSERT_EQ(slow.rows.size(), 3u);
+  EXPECT_EQ(slow.at(2, "t"), 2.0);
+}
+
 TEST_F(SphereSimNormaTest, BadInputExitsWithoutOutput) {
   const std::vector<std::pair<std::string, int>> cases = {
       {"--q0 0,0,0,0", 2},                                     // closed loop takes no state
@@ -180,6 +215,22 @@ TEST_F(SphereSimNormaTest, BadInputExitsWithoutOutput) {
       {"--log-rate 0", 4},
       {"--open-loop --q0 0,nan,0,0 --qd0 0,0,0,0", 4},
       {"--open-loop --q0 0,0,0,0 --qd0 inf,0,0,0", 4},
+      {"--loop closed", 2},
+      {"--loop sampled --rtol 1e-6", 2},                      // the adaptive integrator's
+      {"--loop sampled --atol 1e-9", 2},
+      {"--max-torque 5", 2},                                   // the sampled loop's
+      {"--loop continuous --state-timeout 0.1", 2},
+      {"--loop sampled --open-loop --q0 0,0,0,0 --qd0 0,0,0,0", 2},
+      {"--open-loop --q0 0,0,0,0 --qd0 0,0,0,0 --max-force 5", 2},
+      {"--loop sampled --log-rate 3", 4},                      // rows off whole 1 ms steps
+      {"--loop sampled --log-rate 2000", 4},
+      {"--loop sampled --log-rate 0", 4},
+      {"--loop sampled --max-torque 0", 4},
+      {"--loop sampled --max-force -200", 4},
+      {"--loop sampled --command-timeout -1", 4},
+      {"--loop sampled --state-timeout nan", 4},
+      {"--loop sampled --duration -1", 4},
+      {"--loop sampled --duration 1e300", 4},                 // more steps than a run allows
   };
   for (const auto& [args, status] : cases) {
     const Result r = norma(args);
@@ -223,6 +274,10 @@ TEST_F(SphereSimNormaTest, HelpNamesColumnsAndDefaults) {
   }
   EXPECT_NE(r.out.find("0.001"), std::string::npos);  // --rtol default
   EXPECT_NE(r.out.find("1e-06"), std::string::npos);  // --atol default
+  for (const char* sampled : {"--loop", "sampled", "max_torque", "command_timeout",
+                              "state_timeout", "bit for bit"}) {
+    EXPECT_NE(r.out.find(sampled), std::string::npos) << sampled;
+  }
 }
 
 }  // namespace

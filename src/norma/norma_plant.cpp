@@ -9,6 +9,10 @@
 
 namespace spherical_robots::norma {
 
+Efforts drivingEfforts(const Efforts& measured, bool fresh) {
+  return fresh ? measured : Efforts{};
+}
+
 PlantVector toPlantVector(const NormaState& state) {
   PlantVector x{};
   for (int i = 0; i < 4; ++i) {

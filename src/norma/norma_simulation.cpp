@@ -58,6 +58,11 @@ PathPoint lissajousPath(double t) {
   return p;
 }
 
+double pathStartHeading() {
+  const PathPoint start = lissajousPath(0.0);
+  return std::atan2(start.y_dot, start.x_dot);
+}
+
 std::vector<NormaSample> runOpenLoop(const NormaParameters& parameters,
                                      const OpenLoopConfig& config) {
   const NormaDynamics dynamics(parameters, config.variant);
@@ -88,8 +93,7 @@ std::vector<NormaSample> runClosedLoop(const NormaParameters& parameters,
   const NormaDynamics dynamics(parameters, config.variant);
   const NormaController controller(parameters, config.controller, config.gains);
   OdeState x(kPlantStates + kControllerStates, 0.0);
-  const PathPoint start = lissajousPath(0.0);
-  x[10] = std::atan2(start.y_dot, start.x_dot);
+  x[10] = pathStartHeading();
   // The Jacobian's columns evaluate the right-hand side many times at one t.
   double path_time = std::numeric_limits<double>::quiet_NaN();
   PathPoint path_point;

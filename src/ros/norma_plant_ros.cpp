@@ -70,13 +70,13 @@ NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 void NormaPlantRos::read(const sensor_msgs::JointState& actuators) {
   const std::vector<double> efforts =
       conversions::effortsByName(actuators, kActuators, max_actuator_effort_);
-  torque_ = efforts[0];
-  force_ = efforts[1];
+  measured_ = {efforts[0], efforts[1]};
 }
 
 void NormaPlantRos::advance(double elapsed, bool actuators_fresh) {
-  state_ = norma::advanceWithHeldInputs(dynamics_, state_, actuators_fresh ? torque_ : 0.0,
-                                        actuators_fresh ? force_ : 0.0, elapsed, loop_.step());
+  const norma::Efforts driving = norma::drivingEfforts(measured_, actuators_fresh);
+  state_ = norma::advanceWithHeldInputs(dynamics_, state_, driving.torque, driving.force, elapsed,
+                                        loop_.step());
 }
 
 void NormaPlantRos::publishEveryStep(const ros::Time& now, bool actuators_fresh) {
@@ -89,8 +89,9 @@ void NormaPlantRos::publishEveryStep(const ros::Time& now, bool actuators_fresh)
   msg.x = state_.x;
   msg.y = state_.y;
   msg.psi = state_.psi;
-  msg.torque = actuators_fresh ? torque_ : 0.0;
-  msg.force = actuators_fresh ? force_ : 0.0;
+  const norma::Efforts driving = norma::drivingEfforts(measured_, actuators_fresh);
+  msg.torque = driving.torque;
+  msg.force = driving.force;
   msg.energy = dynamics_.totalEnergy(state_.q, state_.qd);
   state_pub_.publish(msg);
 }

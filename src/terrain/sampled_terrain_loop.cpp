@@ -48,6 +48,7 @@ SampledTerrainLoop::SampledTerrainLoop(const TerrainKinematics& kinematics,
       step_(durationNanoseconds(sampling.plant_step)),
       control_period_(durationNanoseconds(1.0 / sampling.control_rate)),
       hardware_period_(durationNanoseconds(1.0 / sampling.hardware_rate)),
+      timeline_(0.0, kDefaultMaxClockStep),
       state_(initial),
       orientation_(kinematics.geometry(initial).heading_frame) {
   if (law.type() != kinematics.type()) {
@@ -63,16 +64,13 @@ void SampledTerrainLoop::step() {
   const bool measured_fresh =
       measured_at_ != 0 && withinTimeout(measured_at_, now_, sampling_.state_timeout);
   drive_ = measured_fresh ? measured_ : DriveRates{};
-  if (start_ == 0) {
-    start_ = now_;
-  } else {
-    const RollingState next =
-        advanceWithHeldRates(kinematics_, {state_, orientation_}, drive_,
-                             stampSeconds(now_ - last_tick_), sampling_.plant_step);
+  const LoopTimeline::Tick tick = timeline_.tick(now_);
+  if (tick.advances()) {
+    const RollingState next = advanceWithHeldRates(kinematics_, {state_, orientation_}, drive_,
+                                                   tick.elapsed, sampling_.plant_step);
     state_ = next.state;
     orientation_ = next.orientation;
   }
-  last_tick_ = now_;
   if (periodDue(last_publish_, now_, 1.0 / sampling_.publish_rate)) {
     last_publish_ = now_;
     const ContactGeometry sent = kinematics_.geometry(state_);
@@ -106,7 +104,7 @@ void SampledTerrainLoop::step() {
 
 SampledTerrainSample SampledTerrainLoop::sample() const {
   SampledTerrainSample sample;
-  sample.t = start_ == 0 ? 0.0 : stampSeconds(now_ - start_);
+  sample.t = timeline_.started() ? stampSeconds(now_ - timeline_.start()) : 0.0;
   sample.state = state_;
   sample.geometry = kinematics_.geometry(state_);
   sample.realised = kinematics_.realisedRates(state_, drive_);

@@ -9,6 +9,7 @@
 #include "spherical_robots/config/norma_description.hpp"
 #include "spherical_robots/config/robot_description.hpp"
 #include "spherical_robots/norma/norma_simulation.hpp"
+#include "spherical_robots/norma/sampled_norma_loop.hpp"
 
 namespace spherical_robots::sphere_sim {
 namespace {
@@ -17,6 +18,13 @@ constexpr double kClosedLoopDuration = 1300.0;  // [s], the paper's run
 constexpr double kClosedLoopLogRate = 1.0;      // [Hz]
 constexpr double kOpenLoopDuration = 5.0;       // [s]
 constexpr double kOpenLoopLogRate = 100.0;      // [Hz]
+// --loop sampled: the Norma stack's plant step and hardware interface period
+// (launch/norma_stack.launch).
+constexpr double kSampledStep = 0.001;  // [s]
+
+const std::vector<std::string> kContinuousOnly = {"rtol", "atol"};
+const std::vector<std::string> kSampledOnly = {"max-torque", "max-force", "command-timeout",
+                                               "state-timeout"};
 
 const char* const kColumns[] = {"t",      "theta",  "alpha",  "phi", "delta", "thetad",
                                 "alphad", "phid",   "deltad", "X",   "Y",     "psi",
@@ -66,12 +74,18 @@ const norma::NormaSample* leftShaft(const norma::NormaParameters& p,
   return nullptr;
 }
 
-int runOpenLoop(const ParsedOptions& options, std::ostream& out) {
-  for (const char* closed_only : {"controller"}) {
-    if (options.given(closed_only)) {
-      throw UsageError(std::string("--") + closed_only + " is for the closed loop, not --open-loop");
-    }
+/// A usage error (exit 2) naming the first of `names` given, with why it does not belong.
+void requireAbsent(const ParsedOptions& options, const std::vector<std::string>& names,
+                   const std::string& why) {
+  for (const std::string& name : names) {
+    if (options.given(name)) throw UsageError("--" + name + " " + why);
   }
+}
+
+int runOpenLoop(const ParsedOptions& options, std::ostream& out) {
+  std::vector<std::string> closed_only = {"controller", "loop"};
+  closed_only.insert(closed_only.end(), kSampledOnly.begin(), kSampledOnly.end());
+  requireAbsent(options, closed_only, "is for the closed loop, not --open-loop");
   if (!options.given("q0") || !options.given("qd0")) {
     throw UsageError("--open-loop needs --q0 and --qd0");
   }
@@ -102,21 +116,54 @@ int runOpenLoop(const ParsedOptions& options, std::ostream& out) {
   return kSuccess;
 }
 
-int runClosedLoop(const ParsedOptions& options, std::ostream& out) {
-  for (const char* open_only : {"q0", "qd0"}) {
-    if (options.given(open_only)) {
-      throw UsageError(std::string("--") + open_only + " is for --open-loop only");
-    }
+/// How many steps of `step` [s] apart the CSV rows at log_rate [Hz] are: rows come at whole steps.
+/// @throw InvalidInput if 1 / log_rate is no whole number of steps.
+long stepsPerRow(double log_rate, double step) {
+  const double steps = log_rate > 0.0 ? 1.0 / (log_rate * step) : 0.0;
+  const long whole = std::lround(steps);
+  if (whole < 1 || std::abs(steps - static_cast<double>(whole)) > 1e-9 * steps) {
+    throw InvalidInput("--log-rate " + formatNumber(log_rate) + " Hz: with --loop sampled rows " +
+                       "come a whole number of " + formatNumber(step * 1e3) +
+                       " ms steps apart (e.g. 1000, 500, 100 or 1 Hz)");
   }
+  return whole;
+}
+
+/// --loop sampled: the Norma stack's loop, step by step (norma/sampled_norma_loop.hpp).
+std::vector<norma::NormaSample> runSampled(const ParsedOptions& options,
+                                           const norma::ClosedLoopConfig& closed) {
+  norma::SampledLoopConfig config;
+  config.variant = closed.variant;
+  config.controller = closed.controller;
+  config.duration = closed.duration;
+  config.step = kSampledStep;
+  config.limits = {options.number("max-torque"), options.number("max-force")};
+  config.command_timeout = options.number("command-timeout");
+  config.state_timeout = options.number("state-timeout");
+  return norma::runSampledLoop(parametersFrom(options), config,
+                               stepsPerRow(closed.log_rate, config.step));
+}
+
+int runClosedLoop(const ParsedOptions& options, std::ostream& out) {
+  requireAbsent(options, {"q0", "qd0"}, "is for --open-loop only");
+  const bool sampled = options.text("loop") == "sampled";
+  if (sampled)
+    requireAbsent(options, kContinuousOnly, "is for --loop continuous (the adaptive integrator)");
+  else
+    requireAbsent(options, kSampledOnly, "is for --loop sampled");
   norma::ClosedLoopConfig config;
   config.variant = variantFrom(options);
   config.controller = options.text("controller") == "tracking" ? norma::ControllerKind::kTracking
                                                                 : norma::ControllerKind::kPaper;
   config.duration = options.given("duration") ? options.number("duration") : kClosedLoopDuration;
   config.log_rate = options.given("log-rate") ? options.number("log-rate") : kClosedLoopLogRate;
-  config.ode = odeOptionsFrom(options);
-  const std::vector<norma::NormaSample> samples =
-      norma::runClosedLoop(parametersFrom(options), config);
+  std::vector<norma::NormaSample> samples;
+  if (sampled) {
+    samples = runSampled(options, config);
+  } else {
+    config.ode = odeOptionsFrom(options);
+    samples = norma::runClosedLoop(parametersFrom(options), config);
+  }
   OutputFile file(options.text("out"));
   writeCsv(file.stream(), samples);
   file.commit();
@@ -130,6 +177,7 @@ int runClosedLoop(const ParsedOptions& options, std::ostream& out) {
     worst = std::max(worst, s.error);
     ++count;
   }
+  if (sampled) out << "sampled loop (" << formatNumber(kSampledStep * 1e3) << " ms steps), ";
   out << "controller " << options.text("controller") << ", variant " << options.text("variant")
       << ": for t >= " << formatNumber(0.5 * config.duration) << " s RMS |e| "
       << formatNumber(std::sqrt(sum_sq / std::max(count, 1L))) << " m, max |e| "
@@ -160,16 +208,32 @@ rosenbrock4 (L-stable, adaptive; the inner pendulum loop's poles are near -130 s
 dense output at the log times; the default tolerances keep X, Y within 1 mm of a run at
 rtol = atol = 1e-11 on the paper's scenario.
 
+--loop sampled runs the closed loop as the Norma stack (launch/norma_stack.launch, in lock-step,
+the default clock, with ideal actuators) samples it, the same core code in the same order, in
+steps of 1 ms (fixed: the stack's plant step and hardware rate). At each step t (the first at
+1 ms, as the stack's first stamp): the plant advances from the previous step by t minus it
+(fixed-step RK4) with the efforts the actuators applied at the previous step held, or none once
+they are older than --state-timeout; the controller computes from the state at t and its command
+is held until the next step; the hardware interface clamps it to --max-torque and --max-force
+(with its --command-timeout watchdog). Times are whole nanoseconds, turned into seconds as
+ros::Time does. Its X, Y, psi, q and q_dot equal the stack's norma_state at the same time since
+its first stamp, bit for bit (test/norma_batch_equality.test). The defaults of --max-torque,
+--max-force, --command-timeout and --state-timeout are the stack's; --rtol and --atol do not
+apply. --duration 0 runs the first step only. A state that turns non-finite ends the run (exit
+4); the stack's plant would hold it.
+
 CSV columns (SI units, radians; one row every 1/log-rate s from t = 0 through the duration
 inclusive):
-  t                          time [s]
+  t                          time [s]; --loop sampled: since the first step (the stack's stamp
+                             minus its first)
   theta,alpha,phi,delta      q: roll of the shell about the shaft, pendulum relative to the
                              shell, tilt of the shaft, slider displacement from delta0 [m]
   thetad,alphad,phid,deltad  q_dot
   X,Y,psi                    centre of the sphere [m] and heading [rad] (eqs 6, 12)
   Xd,Yd                      desired point [m] (eq 52); 0 in open loop
   err                        |(X, Y) - (Xd, Yd)| [m]; 0 in open loop
-  T,F                        pendulum torque [N m] and slider force [N]; 0 in open loop
+  T,F                        pendulum torque [N m] and slider force [N]; 0 in open loop;
+                             --loop sampled: as the actuators apply them from t on
   energy                     total mechanical energy [J], zero at rest at q = 0
 Numbers are written in the shortest form that reads back as the same double.
 
@@ -177,8 +241,10 @@ stdout: one line. Closed loop: RMS and max |e| over t >= duration / 2, max |delt
 the energy at t = 0 and its largest change.
 
 Exit status: 0 success; 2 usage error (unknown option or choice, malformed number, --q0/--qd0
-without --open-loop, --controller with it); 4 invalid input (non-finite or out-of-range number,
-an unreadable or inconsistent URDF, a state that turns non-finite): one-line error on stderr and no output file.
+without --open-loop, --controller or --loop with it, an option of the other --loop); 4 invalid
+input (non-finite or out-of-range number, a --log-rate that is no whole number of steps with
+--loop sampled, an unreadable or inconsistent URDF, a state that turns non-finite): one-line
+error on stderr and no output file.
 )";
 
 }  // namespace
@@ -203,18 +269,34 @@ Subcommand normaCommand() {
        "text",
        false,
        {"text", "appendix"}},
+      {"loop",
+       "NAME",
+       "Closed loop: continuous (plant and controller as one ODE, adaptive) or sampled (as the "
+       "Norma stack samples it, in 1 ms steps; see below).",
+       "continuous",
+       false,
+       {"continuous", "sampled"}},
+      {"max-torque", "N_M", "--loop sampled: the pendulum motor's effort limit [N m], > 0 (the "
+       "stack's max_torque).", "20", false, {}},
+      {"max-force", "N", "--loop sampled: the slider's effort limit [N], > 0 (the stack's "
+       "max_force).", "200", false, {}},
+      {"command-timeout", "SECONDS", "--loop sampled: the hardware interface's watchdog [s], > 0 "
+       "(the stack's command_timeout).", "0.1", false, {}},
+      {"state-timeout", "SECONDS", "--loop sampled: no effort drives the plant once the last "
+       "actuator state is older than this [s], > 0 (the stack's state_timeout).", "0.05", false,
+       {}},
       {"open-loop", "", "Zero inputs from --q0, --qd0 instead of the closed loop.", "", false, {}},
       {"q0", "TH,AL,PHI,DELTA", "Open loop: initial theta, alpha, phi [rad], delta [m].", "",
        false, {}},
       {"qd0", "THD,ALD,PHID,DELTAD", "Open loop: initial rates [rad/s, m/s].", "", false, {}},
-      {"rtol", "R", "Relative tolerance of the adaptive integrator, > 0.", formatNumber(ode.rtol),
+      {"rtol", "R", "Relative tolerance of the adaptive integrator (--loop continuous), > 0.", formatNumber(ode.rtol),
        false, {}},
-      {"atol", "A", "Absolute tolerance of the adaptive integrator, > 0.", formatNumber(ode.atol),
+      {"atol", "A", "Absolute tolerance of the adaptive integrator (--loop continuous), > 0.", formatNumber(ode.atol),
        false, {}},
       {"duration", "SECONDS",
        "Simulated time [s], >= 0. Default 1300 (closed loop) or 5 (--open-loop).", "", false, {}},
       {"log-rate", "HZ", "CSV rows per second [Hz], > 0. Default 1 (closed loop) or 100 "
-       "(--open-loop).", "", false, {}},
+       "(--open-loop). --loop sampled: 1 / log-rate a whole number of 1 ms steps.", "", false, {}},
       configOption(),
       outOption("CSV file to write (columns below)."),
   };

@@ -18,6 +18,17 @@ struct NormaState {
   double psi = 0.0;  ///< ψ [rad]
 };
 
+/// The pendulum torque T [N m] and slider force F [N] the actuators report applying.
+struct Efforts {
+  double torque = 0.0;
+  double force = 0.0;
+};
+
+/// What drives the plant: the last measured efforts while they are fresh, none once they are
+/// stale (no actuator state within the plant's state_timeout: nothing is known to push). The
+/// norma_dynamics node and the sampled batch loop (sampled_norma_loop.hpp) share this rule.
+Efforts drivingEfforts(const Efforts& measured, bool fresh);
+
 /// The plant's ODE state: q, q̇, X, Y, ψ.
 using PlantVector = std::array<double, 11>;
 

@@ -14,6 +14,10 @@ namespace spherical_robots::norma {
 /// Eq 52: X_d = 2 sin(0.01 t), Y_d = 1.5 sin(0.02 t) [m], t [s].
 PathPoint lissajousPath(double t);
 
+/// ψ(0) along eq 52's initial velocity (0.02, 0.03) m/s [rad]: the paper's scenario starts so
+/// (launch/norma_stack.launch's initial_psi is this number).
+double pathStartHeading();
+
 /// One logged instant.
 struct NormaSample {
   double t = 0.0;                  ///< [s]

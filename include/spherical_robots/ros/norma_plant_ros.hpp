@@ -39,8 +39,7 @@ class NormaPlantRos : private PlantModel {
   std::string base_frame_;
   double max_actuator_effort_;  ///< [N m or N] a measured effort beyond it is rejected
   norma::NormaState state_;
-  double torque_ = 0.0;  ///< measured T [N m]
-  double force_ = 0.0;   ///< measured F [N]
+  norma::Efforts measured_;  ///< the last good actuator state's efforts
   LoopPublisher state_pub_;
   LoopPublisher odom_pub_;
   LoopPublisher joint_pub_;

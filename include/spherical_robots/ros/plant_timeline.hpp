@@ -4,7 +4,8 @@
 // the previous one, never backwards and never by a jump (a step back, or forward by more than
 // max_clock_step, holds the state: core/clock_jump.hpp); a model that throws (also when a step
 // would produce a non-finite state) keeps its last good state and the failure is counted; after
-// `duration` the scenario is complete.
+// `duration` the scenario is complete. The decisions are core/loop_timeline's (which the batch
+// runs that replay a stack share); this class adds the logs, the failure count and diagnostics.
 
 #include <diagnostic_updater/DiagnosticStatusWrapper.h>
 #include <ros/node_handle.h>
@@ -12,7 +13,7 @@
 
 #include <functional>
 
-#include "spherical_robots/core/clock_jump.hpp"
+#include "spherical_robots/core/loop_timeline.hpp"
 
 namespace spherical_robots {
 
@@ -32,21 +33,17 @@ class PlantTimeline {
   /// True once the duration has passed (the node logs and shuts down then); later ticks are to
   /// be ignored.
   bool complete(const ros::Time& now);
-  bool finished() const { return finished_; }
-  double duration() const { return duration_; }
+  bool finished() const { return timeline_.finished(); }
+  double duration() const { return timeline_.duration(); }
 
   /// Adds "time since start [s]", "clock jumps" and "integration failures", and raises ERROR if the model
   /// failed since the last report.
   void report(diagnostic_updater::DiagnosticStatusWrapper& status, const ros::Time& now);
 
  private:
-  double duration_;
-  ClockJumpDetector clock_;
-  ros::Time start_;
-  ros::Time last_tick_;
+  LoopTimeline timeline_;
   unsigned long failures_ = 0;
   unsigned long failures_at_last_report_ = 0;
-  bool finished_ = false;
 };
 
 }  // namespace spherical_robots

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "spherical_robots/core/loop_timeline.hpp"
 #include "spherical_robots/core/stamp.hpp"
 #include "spherical_robots/hardware/simulated_actuators.hpp"
 #include "spherical_robots/terrain/path_tracker.hpp"
@@ -82,8 +83,7 @@ class SampledTerrainLoop {
   Nanoseconds hardware_period_;
 
   Nanoseconds now_ = 0;
-  Nanoseconds start_ = 0;      ///< the first step's time
-  Nanoseconds last_tick_ = 0;  ///< the plant's latest step
+  LoopTimeline timeline_;  ///< the plant's (PlantLoop's): start, elapsed time
   // The plant (terrain_kinematics).
   TerrainState state_;
   Eigen::Quaterniond orientation_;
