@@ -263,16 +263,32 @@ class ReplayRvizCheck(unittest.TestCase):
                    PASS_DEADLINE)
 
     def shot(self, label):
-        """A screenshot with the robot frames' positions from /tf just before and after it."""
+        """A screenshot with the robot frames' positions from /tf just before and after it, saved
+        as replay_rviz_<config>_<label>.png (the replay tests share a ROS_HOME)."""
         before, t_before = self.robot_positions(), self.bag_time()
         image, ppm = grab_screen()
         after, t_after = self.robot_positions(), self.bag_time()
-        path = os.path.join(self.shot_dir, 'replay_rviz_%s.png' % label)
+        config = os.path.splitext(os.path.basename(rospy.get_param('~rviz_config')))[0]
+        path = os.path.join(self.shot_dir, 'replay_rviz_%s_%s.png' % (config, label))
         subprocess.run(['convert', 'ppm:-', path], input=ppm, check=True, timeout=30)
         rospy.loginfo('%s: screenshot %s taken at bag time %.2f-%.2f s', NAME, path, t_before,
                       t_after)
         robots = [None if b is None or a is None else (b + a) / 2.0 for b, a in zip(before, after)]
         return image, robots, path
+
+    def shot_of_panel(self, label, min_jumps):
+        """A shot in the shot window of a pass after `min_jumps` loops once rviz shows its 3D
+        panel. On a loaded machine rviz may not have painted it by the first window (a black or
+        half-drawn window): later passes are tried until PASS_DEADLINE, since what is tested is
+        the picture, not how soon a busy machine draws it. Every try is logged."""
+        deadline = time.time() + PASS_DEADLINE
+        while True:
+            self.wait_for_shot_window(min_jumps)
+            image, robots, path = self.shot(label)
+            if find_panel(image, self.background) is not None or time.time() > deadline:
+                return image, robots, path
+            rospy.logwarn('%s: no 3D panel yet in %s; trying the next pass', NAME, path)
+            min_jumps = self.jumps + 1
 
     def check_shot(self, image, robots, path):
         panel = find_panel(image, self.background)
@@ -353,8 +369,7 @@ class ReplayRvizCheck(unittest.TestCase):
         # rviz needs a moment after subscribing to draw; a pass that began before it was up is
         # fine too, as long as the shot falls in the window.
         time.sleep(3.0)
-        self.wait_for_shot_window(0)
-        image, robots, path = self.shot('first_pass')
+        image, robots, path = self.shot_of_panel('first_pass', 0)
         self.check_shot(image, robots, path)
         time.sleep(1.0)
         image2, _, _ = self.shot('one_second_later')
@@ -363,9 +378,7 @@ class ReplayRvizCheck(unittest.TestCase):
         self.assertGreater(changed, MIN_CHANGED_PIXELS, 'rviz is not rendering live')
 
     def test_03_after_loop(self):
-        jumps = self.jumps
-        self.wait_for_shot_window(jumps + 1)
-        image, robots, path = self.shot('after_loop')
+        image, robots, path = self.shot_of_panel('after_loop', self.jumps + 1)
         self.check_shot(image, robots, path)
 
     def test_04_no_rviz_errors(self):
