@@ -80,7 +80,10 @@ def batch_window():
     import rospkg
     plant, controller = rospy.get_param('terrain_kinematics'), rospy.get_param('pure_pursuit_controller')
     out = '/tmp/stack_check_batch_%d.csv' % os.getpid()
+    # The roller stack loads config/roller.yaml (roller/...) into its namespace.
+    stack = 'roller' if rospy.has_param('roller') else 'terrain'
     subprocess.run([roslib.packages.find_node(PKG, 'sphere_sim')[0], 'terrain', '--loop', 'sampled',
+                    '--stack', stack,
                     '--robot', controller['robot_type'], '--path', controller['path'],
                     '--law', controller['law'], '--model', plant['contact_model'],
                     '--duration', '%g' % SETTLE[1], '--log-rate', '50',

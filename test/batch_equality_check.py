@@ -10,12 +10,11 @@ state topic with an unbounded queue; the launch argument wait_for_subscribers ma
 only once this checker is connected, so it sees every state from the first. In lock-step the
 results do not depend on the machine's load: there is no timing assert here.
 
-As a rostest node (test/terrain_batch_equality.test, test/norma_batch_equality.test) and from a
-shell alike:
-    batch_equality_check.py --stack terrain|norma [--duration S] [--bound 1e-9] \
+As a rostest node (test/{terrain,roller,norma}_batch_equality.test) and from a shell alike:
+    batch_equality_check.py --stack terrain|roller|norma [--duration S] [--bound 1e-9] \
         [--sphere-sim PATH] [-- launch args, e.g. robot:=RS path:=diamond nodelet:=true]
-Launch arguments the batch run also takes (terrain: robot, path, model, law, actuator_models)
-are passed to sphere_sim too.
+Launch arguments the batch run also takes (terrain: robot, path, model, law, actuator_models;
+roller: path, law, actuator_models) are passed to sphere_sim too.
 """
 import argparse
 import csv
@@ -57,7 +56,7 @@ def launch_value(args, name, default):
     return default
 
 
-def terrain_case(duration, extra_args):
+def terrain_case(duration, extra_args, stack='terrain'):
     from spherical_robots.msg import TerrainState, TrackingError
 
     state_fields = ([('contact_point.' + a, lambda m, a=a: getattr(m.contact_point, a), a + '0', 'm')
@@ -69,17 +68,19 @@ def terrain_case(duration, extra_args):
     error_fields = ([('desired.' + a, lambda m, a=a: getattr(m.desired, a), a + 'd', 'm') for a in 'xyz'] +
                     [('error_norm', lambda m: m.error_norm, 'e_norm', 'm'),
                      ('zeta', lambda m: m.zeta, 'zeta', 'rad')])
-    sphere_sim_args = ['terrain', '--loop', 'sampled', '--duration', '%g' % duration,
-                       '--log-rate', '50', '--config', rospkg.RosPack().get_path(PKG)]
+    sphere_sim_args = ['terrain', '--loop', 'sampled', '--stack', stack, '--duration',
+                       '%g' % duration, '--log-rate', '50',
+                       '--config', rospkg.RosPack().get_path(PKG)]
+    fixed = {'robot': '2R', 'model': 'rolling'} if stack == 'roller' else {}
     for name, option, default in (('robot', '--robot', '3R'), ('path', '--path', 'circle'),
                                   ('model', '--model', 'paper'), ('law', '--law', 'smooth')):
-        sphere_sim_args += [option, launch_value(extra_args, name, default)]
+        sphere_sim_args += [option, fixed.get(name) or launch_value(extra_args, name, default)]
     models = launch_value(extra_args, 'actuator_models', '')
     if models:
         sphere_sim_args += ['--actuator-models', models]
     return StackCase(
-        launch='terrain_stack.launch', launch_args=['duration:=%g' % duration],
-        ns=launch_value(extra_args, 'ns', 'sphere'),
+        launch='%s_stack.launch' % stack, launch_args=['duration:=%g' % duration],
+        ns=launch_value(extra_args, 'ns', 'sphere' if stack == 'terrain' else stack),
         topics=[('terrain_state', TerrainState, state_fields),
                 ('tracking_error', TrackingError, error_fields)],
         sphere_sim_args=sphere_sim_args)
@@ -101,7 +102,11 @@ def norma_case(duration, extra_args):
                          '--duration', '%g' % duration, '--log-rate', '1000'])
 
 
-STACKS = {'terrain': terrain_case, 'norma': norma_case}
+def roller_case(duration, extra_args):
+    return terrain_case(duration, extra_args, 'roller')
+
+
+STACKS = {'terrain': terrain_case, 'roller': roller_case, 'norma': norma_case}
 
 
 def free_port():

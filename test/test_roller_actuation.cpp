@@ -10,6 +10,8 @@
 #include <limits>
 #include <random>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "spherical_robots/config/roller_config.hpp"
 #include "spherical_robots/roller/roller_actuation.hpp"
@@ -59,6 +61,25 @@ TEST(RollerActuation, InverseThenForwardGivesTheCommandedCentreVelocity) {
     // The realised ω lies in the drive's plane: it rolls on the rollers up to eq 28's slip.
     EXPECT_NEAR(state.omega.dot(actuation.drive().omegaPlaneNormal()), 0.0, 1e-12);
   }
+}
+
+TEST(RollerActuation, AsTheStacksDriveGivesBackThe2RCommandThroughTheMotors) {
+  // The roller stack's drive in the batch run (terrain::ActuatorDrive): the controller's 2R rates
+  // to motor set-points, the motors' rates back to 2R rates; a turn rate, which 2R never has, is
+  // dropped on the way in and not made on the way out.
+  const RollerActuation actuation = paperDrive();
+  const spherical_robots::terrain::ActuatorDrive& drive = actuation;
+  EXPECT_EQ(drive.actuatorNames(), (std::vector<std::string>{"roller_1", "roller_2"}));
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> rate(-2.0, 2.0);
+  for (int trial = 0; trial < 100; ++trial) {
+    const DriveRates command{rate(random), rate(random), rate(random)};
+    const DriveRates back = drive.driveRates(drive.setpoints(command));
+    EXPECT_NEAR(back.roll_rate, command.roll_rate, 1e-12) << "trial " << trial;
+    EXPECT_NEAR(back.lateral_rate, command.lateral_rate, 1e-12) << "trial " << trial;
+    EXPECT_EQ(back.turn_rate, 0.0);
+  }
+  EXPECT_THROW(drive.driveRates({1.0}), std::invalid_argument);
 }
 
 TEST(RollerActuation, PeripheralSpeedIsRollerRadiusTimesMotorRate) {

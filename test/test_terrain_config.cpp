@@ -3,13 +3,19 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
+#include <optional>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 #include <unistd.h>
 
+#include "spherical_robots/config/actuator_models.hpp"
+#include "spherical_robots/config/layered_parameter_source.hpp"
 #include "spherical_robots/config/robot_description.hpp"
 #include "spherical_robots/config/terrain_config.hpp"
 #include "spherical_robots/config/yaml_parameter_source.hpp"
@@ -224,6 +230,70 @@ TEST(YamlParameterSource, ReadsNestedKeysAndReportsAbsentOnes) {
 
 // ------------------------------------------------------------------------------------------
 // Factories.
+
+TEST(LayeredParameterSource, RollerYamlOverTerrainYamlIsWhatTheRollerStacksNodesRead) {
+  // launch/roller_stack.launch loads config/terrain.yaml, then config/roller.yaml: a later file
+  // overrides key by key and leaves the rest.
+  std::vector<std::unique_ptr<spherical_robots::config::ParameterSource>> layers;
+  layers.push_back(std::make_unique<YamlParameterSource>(kShipped));
+  layers.push_back(std::make_unique<YamlParameterSource>(SPHERICAL_ROBOTS_SOURCE_DIR
+                                                         "/config/roller.yaml"));
+  const spherical_robots::config::LayeredParameterSource both(std::move(layers));
+  const TerrainConfig c = loadTerrainConfig(both);
+  EXPECT_EQ(c.surface.type, "plane");            // roller.yaml's
+  EXPECT_EQ(c.surface.amplitude, 0.2);           // terrain.yaml's, not overridden
+  EXPECT_EQ(c.smooth_gains.at(RobotType::TwoAxisRolling).approach_speed, 0.2);  // roller.yaml's
+  EXPECT_EQ(c.smooth_gains.at(RobotType::TwoAxisRolling).along_gain, 4.0);      // terrain.yaml's
+  EXPECT_EQ(c.circle_radius, 2.0);
+  EXPECT_EQ(both.text("terrain/surface/type"), std::optional<std::string>("plane"));
+  EXPECT_EQ(both.number("absent/key"), std::nullopt);
+  const auto keys = both.keys("terrain/surface");
+  ASSERT_TRUE(keys.has_value());
+  for (const char* key : {"type", "amplitude", "frequency", "offset"})
+    EXPECT_NE(std::find(keys->begin(), keys->end(), key), keys->end()) << key;
+  EXPECT_NE(both.origin().find("roller.yaml"), std::string::npos);
+  EXPECT_THROW(spherical_robots::config::LayeredParameterSource({}), std::invalid_argument);
+}
+
+TEST(ActuatorModels, ShippedRealisticFileAndEveryRuleOfTheReader) {
+  using spherical_robots::config::loadActuatorModels;
+  const auto shipped = loadActuatorModels(
+      YamlParameterSource(SPHERICAL_ROBOTS_SOURCE_DIR "/config/actuators_realistic.yaml"),
+      {"theta", "phi"});
+  ASSERT_EQ(shipped.models.size(), 2u);
+  for (const auto& model : shipped.models) {  // the file's comment: 50 ms lag, 10 ms, 4096 counts
+    EXPECT_EQ(model.time_constant, 0.05);
+    EXPECT_EQ(model.dead_time, 0.01);
+    EXPECT_EQ(model.position_resolution, 2 * kPi / 4096);
+    EXPECT_EQ(model.velocity_noise, 0.02);
+  }
+  EXPECT_EQ(shipped.noise_seed, 42u);
+  // models/<name> overrides default_model field by field; absent fields are 0 (off).
+  const TempYaml overridden("default_model: {time_constant: 0.1}\nmodels: {phi: {dead_time: 0.02}}\n");
+  const auto models = loadActuatorModels(YamlParameterSource(overridden.path()), {"theta", "phi"});
+  EXPECT_EQ(models.models[0].time_constant, 0.1);
+  EXPECT_EQ(models.models[0].dead_time, 0.0);
+  EXPECT_EQ(models.models[1].time_constant, 0.1);
+  EXPECT_EQ(models.models[1].dead_time, 0.02);
+  EXPECT_EQ(models.noise_seed, 0u);
+  const std::pair<const char*, const char*> bad[] = {
+      {"default_model: {lag: 0.1}\n", "default_model/lag"},
+      {"models: {psi: {dead_time: 0.1}}\n", "models/psi"},
+      {"default_model: {dead_time: -0.1}\n", "default_model/dead_time"},
+      {"noise_seed: 1.5\n", "noise_seed"},
+      {"noise_seed: -1\n", "noise_seed"},
+      {"models: [1, 2]\n", "models"}};
+  for (const auto& [text, key] : bad) {
+    const TempYaml file(text);
+    try {
+      loadActuatorModels(YamlParameterSource(file.path()), {"theta", "phi"});
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(file.path()), std::string::npos) << e.what();
+    }
+  }
+}
 
 TEST(MakeSurface, BuildsTheNamedSurfaceAndRejectsUnknownNames) {
   SurfaceSpec spec;  // cosine, a = 0.2, w = 2

@@ -1,6 +1,8 @@
 #include "spherical_robots/roller/roller_actuation.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "spherical_robots/core/validation.hpp"
 
@@ -41,6 +43,24 @@ DriveState RollerActuation::driveState(const std::array<double, 2>& motor_rates)
   if (std::hypot(omega.x(), omega.y()) > kDegenerateTolerance * omega.norm())
     state.motion = sphereMotion(omega, drive_.geometry().radius());  // eq 14
   return state;
+}
+
+std::vector<std::string> RollerActuation::actuatorNames() const {
+  return {kMotorNames.begin(), kMotorNames.end()};
+}
+
+std::vector<double> RollerActuation::setpoints(const terrain::DriveRates& command) const {
+  const std::array<double, 2> rates =
+      motorRates(terrain::keepActuated(terrain::RobotType::TwoAxisRolling, command));
+  return {rates[0], rates[1]};
+}
+
+terrain::DriveRates RollerActuation::driveRates(const std::vector<double>& measured) const {
+  if (measured.size() != kMotorNames.size())
+    throw std::invalid_argument("the friction drive has 2 motors, got " +
+                                std::to_string(measured.size()) + " rates");
+  return terrain::keepActuated(terrain::RobotType::TwoAxisRolling,
+                               rollingRates(driveState({measured[0], measured[1]}).omega));
 }
 
 }  // namespace spherical_robots::roller

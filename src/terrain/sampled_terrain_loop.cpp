@@ -10,11 +10,11 @@
 namespace spherical_robots::terrain {
 namespace {
 
-hardware::SimulatedActuators actuatorsOf(RobotType type, const StackSampling& sampling) {
+hardware::SimulatedActuators actuatorsOf(const ActuatorDrive& drive, const StackSampling& sampling) {
   hardware::ActuatorLimits limits;
   limits.max_velocity = sampling.max_velocity;
   limits.max_acceleration = sampling.max_acceleration;
-  const std::vector<std::string> names = actuatorNames(type);
+  const std::vector<std::string> names = drive.actuatorNames();
   return hardware::SimulatedActuators(names, std::vector<hardware::ActuatorLimits>(names.size(), limits),
                                       sampling.command_timeout, sampling.actuator_models,
                                       sampling.noise_seed);
@@ -38,12 +38,15 @@ void validate(const StackSampling& sampling) {
 
 SampledTerrainLoop::SampledTerrainLoop(const TerrainKinematics& kinematics,
                                        const PursuitController& law, const ReferencePath& path,
-                                       const StackSampling& sampling, const TerrainState& initial)
+                                       const StackSampling& sampling, const ActuatorDrive* drive,
+                                       const TerrainState& initial)
     : kinematics_(kinematics),
       sampling_((validate(sampling), sampling)),
+      direct_drive_(kinematics.type()),
+      drive_stage_(drive != nullptr ? *drive : direct_drive_),
       tracker_(law, path, kinematics.surface()),
-      actuators_(actuatorsOf(kinematics.type(), sampling)),
-      actuator_names_(actuatorNames(kinematics.type())),
+      actuators_(actuatorsOf(drive_stage_, sampling)),
+      actuator_names_(drive_stage_.actuatorNames()),
       // As the nodes turn their parameters into ros::Duration.
       step_(durationNanoseconds(sampling.plant_step)),
       control_period_(durationNanoseconds(1.0 / sampling.control_rate)),
@@ -87,17 +90,18 @@ void SampledTerrainLoop::step() {
       tracked_ = tracker_.command(now_, received_, received_tilt_);
       command = tracked_.rates;
     }
-    // 3a. The hardware interface takes the command as it arrives, stamped with the step.
+    // 3a. The hardware interface takes the command as it arrives, stamped with the step (in the
+    // roller stack converted to motor rates by friction_drive_controller on the way).
     const std::string refused =
-        actuators_.command(actuator_names_, actuatedValues(kinematics_.type(), command),
-                           stampSeconds(now_));
+        actuators_.command(actuator_names_, drive_stage_.setpoints(command), stampSeconds(now_));
     if (!refused.empty()) throw std::runtime_error("the actuators refused a command: " + refused);
   }
-  // 3b. The hardware interface's own work when it is due; the plant reads what it reports.
+  // 3b. The hardware interface's own work when it is due; the plant reads what it reports (in
+  // the roller stack converted to drive rates by friction_drive_sim on the way).
   if (now_ >= hardware_due_) {
     hardware_due_ = now_ + hardware_period_;
     actuators_.update(stampSeconds(now_));
-    measured_ = ratesFromActuated(kinematics_.type(), actuators_.measuredVelocities());
+    measured_ = drive_stage_.driveRates(actuators_.measuredVelocities());
     measured_at_ = now_;
   }
 }

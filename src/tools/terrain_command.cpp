@@ -4,6 +4,8 @@
 #include <sstream>
 
 #include "spherical_robots/config/actuator_models.hpp"
+#include "spherical_robots/config/layered_parameter_source.hpp"
+#include "spherical_robots/config/roller_config.hpp"
 #include "spherical_robots/config/robot_description.hpp"
 #include "spherical_robots/config/terrain_config.hpp"
 #include "spherical_robots/config/yaml_parameter_source.hpp"
@@ -18,6 +20,9 @@ constexpr double kSettleTime = 40.0;     // [s]: the paper's figures settle by t
 constexpr double kMaxSteps = 1e9;
 /// How close a ratio of times must be to a whole number: row times are exact multiples of dt.
 constexpr double kWholeTolerance = 1e-9;
+// launch/roller_stack.launch's motor limits (hardware interface max_velocity, max_acceleration).
+constexpr double kRollerMotorMaxVelocity = 60.0;       // [rad/s]
+constexpr double kRollerMotorMaxAcceleration = 300.0;  // [rad/s^2]
 
 const char* const kColumns[] = {"t",  "x0",     "y0",        "z0",           "xd",       "yd",
                                 "zd", "e_norm", "zeta",      "psi",          "phi",      "cx",
@@ -59,6 +64,14 @@ TerrainRunSettings settingsFrom(const ParsedOptions& options) {
                                                         : TerrainRunSettings{}.dt;
   settings.log_rate = options.number("log-rate");
   settings.config_dir = configDirectory(options);
+  settings.stack = options.text("stack");
+  if (settings.stack != "terrain" && settings.loop != TerrainLoop::Sampled)
+    throw UsageError("--stack " + settings.stack + " needs --loop sampled (it names a launched "
+                     "stack whose loop is replayed)");
+  if (settings.stack == "roller" && (settings.robot != terrain::RobotType::TwoAxisRolling ||
+                                     settings.model != terrain::ContactModel::Rolling))
+    throw UsageError("--stack roller is a 2R robot in the rolling contact model: give --robot 2R "
+                     "--model rolling");
   if (options.given("actuator-models")) {
     if (settings.loop != TerrainLoop::Sampled)
       throw UsageError("--actuator-models needs --loop sampled (the continuous loop has no actuators)");
@@ -90,6 +103,10 @@ whole nanoseconds from the stack's first step (t = 0 here), so every row equals 
 messages of the same time since its first stamp: terrain_state (contact point, centre, psi, phi,
 realised rates) and tracking_error (the controller's latest desired point and error, held
 between its 50 Hz steps). The stack's default run is --law smooth --loop sampled --log-rate 50.
+With --stack roller the stack replayed is launch/roller_stack.launch (--robot 2R --model rolling):
+config/roller.yaml loaded over config/terrain.yaml, the controller's 2R rates turned into the
+rollers' motor rates (friction_drive_controller) and the motors' measured rates into the
+sphere's (friction_drive_sim, with slip) on the way.
 
 CSV columns (SI units, radians; one row every 1/log-rate s from t = 0 through the duration):
   t             time [s]
@@ -145,8 +162,15 @@ TerrainRun::TerrainRun(const TerrainRunSettings& settings) : settings_(settings)
   }
   rows_ = steps / steps_per_row_;
 
-  const config::TerrainConfig scenario = config::loadTerrainConfig(
-      config::YamlParameterSource(settings.config_dir + "/config/terrain.yaml"));
+  // The parameters as the stack's nodes see them: config/roller.yaml loaded over terrain.yaml.
+  std::vector<std::unique_ptr<config::ParameterSource>> layers;
+  layers.push_back(std::make_unique<config::YamlParameterSource>(settings.config_dir +
+                                                                 "/config/terrain.yaml"));
+  if (settings.stack == "roller")
+    layers.push_back(std::make_unique<config::YamlParameterSource>(settings.config_dir +
+                                                                   "/config/roller.yaml"));
+  const config::LayeredParameterSource parameters(std::move(layers));
+  const config::TerrainConfig scenario = config::loadTerrainConfig(parameters);
   const double radius = radiusFromUrdf(settings.config_dir + "/urdf/terrain_robot.urdf");
   surface_ = config::makeSurface(scenario.surface);
   path_ = config::makePath(settings.path, scenario);
@@ -154,9 +178,17 @@ TerrainRun::TerrainRun(const TerrainRunSettings& settings) : settings_(settings)
                                                              settings.model, scenario.tilt_limit);
   controller_ = config::makePursuitController(settings.law, settings.robot, scenario, radius);
   sampling_.plant_step = settings.dt;
+  if (settings.stack == "roller") {
+    drive_ = std::make_unique<roller::RollerActuation>(
+        config::makeRollerActuation(config::loadRollerConfig(parameters), radius));
+    sampling_.max_velocity = kRollerMotorMaxVelocity;
+    sampling_.max_acceleration = kRollerMotorMaxAcceleration;
+  }
   if (!settings.actuator_models.empty()) {
+    const terrain::DirectDrive direct(settings.robot);
     const config::ActuatorModels models = config::loadActuatorModels(
-        config::YamlParameterSource(settings.actuator_models), terrain::actuatorNames(settings.robot));
+        config::YamlParameterSource(settings.actuator_models),
+        (drive_ ? *drive_ : static_cast<const terrain::ActuatorDrive&>(direct)).actuatorNames());
     sampling_.actuator_models = models.models;
     sampling_.noise_seed = models.noise_seed;
   }
@@ -189,7 +221,7 @@ terrain::TrackingSummary TerrainRun::run(std::ostream* csv, Step step, RowAt row
 
 terrain::TrackingSummary TerrainRun::simulate(std::ostream* csv) const {
   if (settings_.loop == TerrainLoop::Sampled) {
-    terrain::SampledTerrainLoop loop(*kinematics_, *controller_, *path_, sampling_);
+    terrain::SampledTerrainLoop loop(*kinematics_, *controller_, *path_, sampling_, drive_.get());
     loop.step();  // the stack's first step is its t = 0
     return run(csv, [&loop] { loop.step(); }, [&loop](const auto& write) {
       const terrain::SampledTerrainSample s = loop.sample();
@@ -291,6 +323,15 @@ Subcommand terrainCommand() {
        formatNumber(defaults.log_rate),
        false,
        {}},
+      {"stack",
+       "NAME",
+       "With --loop sampled, the launched stack replayed: terrain (launch/terrain_stack.launch)\n"
+       "or roller (launch/roller_stack.launch: a 2R robot, --robot 2R --model rolling, on\n"
+       "config/roller.yaml's level floor, driven through the friction drive's two rollers, motors\n"
+       "limited to 60 rad/s and 300 rad/s^2).",
+       "terrain",
+       false,
+       {"terrain", "roller"}},
       {"actuator-models",
        "FILE",
        "With --loop sampled: the hardware interface's actuator models, the YAML file a stack\n"

@@ -30,6 +30,9 @@ struct TerrainRunSettings {
   terrain::PursuitLaw law = terrain::PursuitLaw::Paper;
   double duration = 200.0;  ///< [s], >= 0, a whole number of log periods
   TerrainLoop loop = TerrainLoop::Continuous;
+  /// sampled: the stack replayed, "terrain" (launch/terrain_stack.launch) or "roller"
+  /// (launch/roller_stack.launch: config/roller.yaml over config/terrain.yaml, the friction drive)
+  std::string stack = "terrain";
   double dt = 0.005;        ///< RK4 step [s] > 0 (continuous); the plant's step (sampled)
   double log_rate = 10.0;   ///< CSV rows per second [Hz]; 1/log_rate a whole number of steps
   std::string config_dir;   ///< holds config/terrain.yaml and urdf/terrain_robot.urdf
@@ -80,6 +83,7 @@ class TerrainRun {
   std::unique_ptr<terrain::TerrainKinematics> kinematics_;
   std::unique_ptr<terrain::PursuitController> controller_;
   terrain::StackSampling sampling_;
+  std::unique_ptr<terrain::ActuatorDrive> drive_;  ///< null: the terrain stack's DirectDrive
 };
 
 /// The subcommand's option table and run function, for runSphereSim.

@@ -14,7 +14,7 @@ namespace spherical_robots::config {
 
 /// The actuator names of the roller stack on actuators/command and actuators/state: the motors of
 /// the paper's roller 1 and roller 2, angular rates [rad/s].
-inline const std::array<std::string, 2> kRollerActuatorNames = {"roller_1", "roller_2"};
+inline const std::array<std::string, 2>& kRollerActuatorNames = roller::kMotorNames;
 
 /// Defaults: the paper's drive (section 3: P1 at azimuth 215°, P2 at 325°, both at 60° elevation;
 /// α1 = −α2 = 30°) with 30 mm rollers.

@@ -7,11 +7,14 @@
 // φ̇ (about h) = ω_x. Conventions: docs/conventions.md, "Friction drive".
 
 #include <array>
+#include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
 #include "spherical_robots/roller/friction_drive.hpp"
 #include "spherical_robots/terrain/robot_type.hpp"
+#include "spherical_robots/terrain/sampled_terrain_loop.hpp"
 
 namespace spherical_robots::roller {
 
@@ -19,7 +22,12 @@ namespace spherical_robots::roller {
 /// turns the sphere about the vertical through the contact point and does not move the centre.
 terrain::DriveRates rollingRates(const Eigen::Vector3d& omega);
 
-class RollerActuation {
+/// The motors' names on actuators/command and actuators/state: the paper's roller 1 and 2.
+inline const std::array<std::string, 2> kMotorNames = {"roller_1", "roller_2"};
+
+/// Also the roller stack's drive between the 2R controller and the motors, as its friction drive
+/// nodes convert (terrain::ActuatorDrive, for the batch run that replays the stack).
+class RollerActuation final : public terrain::ActuatorDrive {
  public:
   /// @param roller_radius radius of both rollers [m], finite and > 0: peripheral speed
   ///        v_i = roller_radius · motor rate_i.
@@ -40,6 +48,14 @@ class RollerActuation {
   /// has a horizontal part, and zero otherwise.
   /// @throw std::invalid_argument on a non-finite rate.
   DriveState driveState(const std::array<double, 2>& motor_rates) const;
+
+  /// kMotorNames.
+  std::vector<std::string> actuatorNames() const override;
+  /// motorRates() of the command's 2R rates (friction_drive_controller).
+  std::vector<double> setpoints(const terrain::DriveRates& command) const override;
+  /// The 2R rates of driveState(measured)'s ω (friction_drive_sim). @throw std::invalid_argument
+  /// unless two finite rates.
+  terrain::DriveRates driveRates(const std::vector<double>& measured) const override;
 
  private:
   FrictionDrive drive_;

@@ -15,6 +15,7 @@
 
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "spherical_robots/core/loop_timeline.hpp"
@@ -25,7 +26,40 @@
 
 namespace spherical_robots::terrain {
 
-/// How the stack samples its loop: the nodes' parameters as launch/terrain_stack.launch sets them.
+/// What stands between the controller's drive rates and the actuators, both ways: in the terrain
+/// stack nothing (the actuators are the drive rates, DirectDrive); in the roller stack the
+/// friction drive's inverse (friction_drive_controller) and forward kinematics with slip
+/// (friction_drive_sim), roller::RollerActuation.
+class ActuatorDrive {
+ public:
+  virtual ~ActuatorDrive() = default;
+  /// The actuators' names on actuators/command and actuators/state.
+  virtual std::vector<std::string> actuatorNames() const = 0;
+  /// Their set-points for the controller's command. @throw std::invalid_argument if non-finite.
+  virtual std::vector<double> setpoints(const DriveRates& command) const = 0;
+  /// The drive rates the plant reads for the actuators' measured rates, in actuatorNames() order.
+  /// @throw std::invalid_argument if non-finite.
+  virtual DriveRates driveRates(const std::vector<double>& measured) const = 0;
+};
+
+/// The terrain stack's actuators: one per actuated drive rate (terrain::actuatorNames).
+class DirectDrive final : public ActuatorDrive {
+ public:
+  explicit DirectDrive(RobotType type) : type_(type) {}
+  std::vector<std::string> actuatorNames() const override { return terrain::actuatorNames(type_); }
+  std::vector<double> setpoints(const DriveRates& command) const override {
+    return actuatedValues(type_, command);
+  }
+  DriveRates driveRates(const std::vector<double>& measured) const override {
+    return ratesFromActuated(type_, measured);
+  }
+
+ private:
+  RobotType type_;
+};
+
+/// How the stack samples its loop: the nodes' parameters as launch/terrain_stack.launch sets them
+/// (launch/roller_stack.launch: max_velocity 60, max_acceleration 300).
 struct StackSampling {
   double plant_step = 0.01;        ///< terrain_kinematics ~step [s]
   double publish_rate = 50.0;      ///< terrain_kinematics ~publish_rate [Hz]: terrain_state
@@ -37,7 +71,7 @@ struct StackSampling {
   double max_acceleration = 50.0;  ///< hardware_interface ~max_acceleration [rad/s^2]
   double command_timeout = 0.5;    ///< hardware_interface ~command_timeout [s]
   /// hardware_interface's actuator models (actuator_models:=FILE), one per actuator in
-  /// actuatorNames() order, and their noise seed; none: ideal actuators.
+  /// ActuatorDrive::actuatorNames() order, and their noise seed; none: ideal actuators.
   std::vector<hardware::ActuatorModel> actuator_models;
   std::uint32_t noise_seed = 0;
 };
@@ -56,11 +90,12 @@ struct SampledTerrainSample {
 
 class SampledTerrainLoop {
  public:
-  /// The kinematics, law and path must outlive the loop; the law must be for the kinematics'
-  /// robot type. @throw std::invalid_argument on a bad sampling or a type mismatch.
+  /// The kinematics, law, path and drive must outlive the loop; the law must be for the
+  /// kinematics' robot type. drive null: DirectDrive (the terrain stack).
+  /// @throw std::invalid_argument on a bad sampling or a type mismatch.
   SampledTerrainLoop(const TerrainKinematics& kinematics, const PursuitController& law,
                      const ReferencePath& path, const StackSampling& sampling = {},
-                     const TerrainState& initial = {});
+                     const ActuatorDrive* drive = nullptr, const TerrainState& initial = {});
 
   /// One step of the stack, the first at t = one plant step. @throw std::runtime_error if the
   /// plant's state stops being finite or the actuators refuse a command (neither happens in a
@@ -75,6 +110,8 @@ class SampledTerrainLoop {
  private:
   const TerrainKinematics& kinematics_;
   StackSampling sampling_;
+  DirectDrive direct_drive_;
+  const ActuatorDrive& drive_stage_;
   PathTracker tracker_;
   hardware::SimulatedActuators actuators_;
   std::vector<std::string> actuator_names_;

@@ -1,0 +1,46 @@
+#include "spherical_robots/config/layered_parameter_source.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace spherical_robots::config {
+
+LayeredParameterSource::LayeredParameterSource(
+    std::vector<std::unique_ptr<ParameterSource>> layers)
+    : layers_(std::move(layers)) {
+  if (layers_.empty() || std::any_of(layers_.begin(), layers_.end(),
+                                     [](const auto& layer) { return layer == nullptr; }))
+    throw std::invalid_argument("layered parameters: every layer must exist, and one at least");
+}
+
+std::optional<double> LayeredParameterSource::number(const std::string& key) const {
+  for (auto layer = layers_.rbegin(); layer != layers_.rend(); ++layer)
+    if (const std::optional<double> value = (*layer)->number(key)) return value;
+  return std::nullopt;
+}
+
+std::optional<std::string> LayeredParameterSource::text(const std::string& key) const {
+  for (auto layer = layers_.rbegin(); layer != layers_.rend(); ++layer)
+    if (std::optional<std::string> value = (*layer)->text(key)) return value;
+  return std::nullopt;
+}
+
+std::optional<std::vector<std::string>> LayeredParameterSource::keys(const std::string& key) const {
+  std::optional<std::vector<std::string>> all;
+  for (const auto& layer : layers_) {
+    const std::optional<std::vector<std::string>> some = layer->keys(key);
+    if (!some) continue;
+    if (!all) all.emplace();
+    for (const std::string& name : *some)
+      if (std::find(all->begin(), all->end(), name) == all->end()) all->push_back(name);
+  }
+  return all;
+}
+
+std::string LayeredParameterSource::origin() const {
+  std::string names;
+  for (const auto& layer : layers_) names += (names.empty() ? "" : " + ") + layer->origin();
+  return names;
+}
+
+}  // namespace spherical_robots::config
