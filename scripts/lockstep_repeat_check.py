@@ -39,9 +39,12 @@ STACKS = {
     'roller': ('roller', ['odom', 'terrain_state', 'drive/command', 'actuators/command',
                           'actuators/state', 'drive/state', 'roller_drive', 'tracking_error'],
                ('odom', 50.0), True),
+    'rotor': ('rotor', ['odom', 'joint_states', 'actuators/command', 'actuators/state'],
+              ('odom', 50.0), True),
 }
-# Not here: the rotor and FreeBOT stacks are driven from outside the loop (rotor_execute.py,
-# freebot_goal_sequence.py), so when their manoeuvres start depends on the machine.
+# Not here: the FreeBOT stack is driven from outside the loop (freebot_goal_sequence.py), so when
+# its goals arrive depends on the machine. The rotor stack's planner starts its manoeuvre itself
+# (execute:=true, the default), at its first command period.
 
 
 def free_port():
@@ -99,12 +102,14 @@ def messages(bag_path, topics):
 
 
 def transforms(bag_path, prefix):
-    """The /tf messages of the stack's frames, as (child frame, stamp, translation, rotation)."""
+    """The plant's /tf messages of the stack's frames (those from the fixed frame `world`; the
+    ones between the robot's links come from robot_state_publisher, an observer, which may drop
+    joint_states it falls behind on), as (child frame, stamp, translation, rotation)."""
     out = []
     with rosbag.Bag(bag_path) as bag:
         for _, msg, _ in bag.read_messages(topics=['/tf']):
             for t in msg.transforms:
-                if t.child_frame_id.startswith(prefix):
+                if t.child_frame_id.startswith(prefix) and t.header.frame_id == 'world':
                     tr, rot = t.transform.translation, t.transform.rotation
                     out.append((t.child_frame_id, t.header.stamp.to_nsec(),
                                 tr.x, tr.y, tr.z, rot.x, rot.y, rot.z, rot.w))

@@ -98,6 +98,7 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
         nh, std::vector<std::pair<ros::Timer*, double>>{{&command_timer_, command_period_}},
         clock_.maxStep());
   }
+  planStartUpManoeuvre(pnh);
   // The updater publishes only when called: a wall timer keeps /diagnostics going (and the odom
   // input's staleness visible) when no odom arrives.
   diagnostics_timer_ = startDiagnostics(nh, updater_);
@@ -105,6 +106,28 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.add("rotor planner", this, &RotorPlannerRos::diagnose);
   ROS_INFO_STREAM("rotor_planner: R = " << radius_ << " m, circle radii up to " << max_radius_
                                         << " m; service " << service_.getService());
+}
+
+void RotorPlannerRos::planStartUpManoeuvre(const ros::NodeHandle& pnh) {
+  if (!pnh.hasParam("manoeuvre")) return;
+  spherical_robots::PlanRotorMotion::Request request;
+  spherical_robots::PlanRotorMotion::Response response;
+  request.k = positiveParam(pnh, "manoeuvre/k", 2.5);
+  request.steps = countParam(pnh, "manoeuvre/steps", 2, 1);
+  request.u_a = numberParam(pnh, "manoeuvre/u", 0.0);
+  request.v_a = numberParam(pnh, "manoeuvre/v", 0.0);
+  request.psi = numberParam(pnh, "manoeuvre/psi", 0.0);
+  onPlan(request, response);
+  if (!response.success)
+    throw std::invalid_argument("no plan for the start-up manoeuvre (" +
+                                pnh.resolveName("manoeuvre") + "): " + response.reason);
+  const int index = countParam(pnh, "manoeuvre/index", 0, 0);
+  if (static_cast<std::size_t>(index) >= plans_.size())
+    throw std::invalid_argument("parameter " + pnh.resolveName("manoeuvre/index") + " = " +
+                                std::to_string(index) + ": the plan has " +
+                                std::to_string(plans_.size()) + " solution(s)");
+  start_up_execute_ = static_cast<std::uint32_t>(index);
+  if (!lockstep_) command_timer_.start();
 }
 
 bool RotorPlannerRos::onPlan(spherical_robots::PlanRotorMotion::Request& request,
@@ -382,6 +405,12 @@ void RotorPlannerRos::onCommandTimer(const ros::TimerEvent& event) {
 void RotorPlannerRos::command(const ros::Time& now) {
   const double jump = clock_.jumpOver(now.toSec());
   if (jump != 0.0 && timer_guard_) timer_guard_->reset();
+  if (start_up_execute_) {
+    std_msgs::UInt32 start_up;
+    start_up.data = *start_up_execute_;
+    start_up_execute_.reset();
+    onExecute(start_up);
+  }
   if (!execution_) return;
   if (jump != 0.0) {
     // The schedule goes on from where it was, not from where the jump would put it.

@@ -52,6 +52,11 @@ namespace spherical_robots {
 /// rotor_inertia_scale J_zz / J_r (12) in the node handle's namespace. The plan starts wherever
 /// the sphere is at rest (odom, nav_msgs/Odometry of the plant): its goal is the plan's target
 /// taken from there (rotor::planEnd; the zero state gives the target itself).
+/// A manoeuvre at start-up: with ~manoeuvre set, the node plans ~manoeuvre/{u, v [m], psi [rad]}
+/// (0), k (2.5) and steps (2) as a ~plan request would at construction
+/// (no plan: construction fails, naming the reason) and executes solution ~manoeuvre/index (0)
+/// from its first command period, so a lock-step run starts it at the same step every time
+/// (launch/rotor_stack.launch execute:=true), unlike a request from outside the loop.
 /// Closing the loop over manoeuvres: with ~corrections N (0: open loop) > 0, after each
 /// execution and its ~settle [s] (1) the node measures the rest from odom and, while corrections
 /// remain: if the contact is more than ~correction_tilt_tolerance [rad] (1e-4) off the sphere's
@@ -83,6 +88,8 @@ class RotorPlannerRos {
   /// Publishes the path and marker of the plan (a, b, γ in units of R) for inertia ratio k.
   void publishPlan(double k, int steps, double a, double b, double gamma);
   void onExecute(const std_msgs::UInt32& msg);
+  /// Plans ~manoeuvre (if set) and keeps its index for the first command period.
+  void planStartUpManoeuvre(const ros::NodeHandle& pnh);
   /// Starts tracing `curve` over `steps` steps toward `goal`; false (logged) if it cannot.
   bool startExecution(std::uint32_t index, const rotor::FigureEight& curve, int steps,
                       const rotor::RestPose& goal, int corrections_left);
@@ -147,6 +154,7 @@ class RotorPlannerRos {
     bool pole_return;  ///< the arc back to the pole, not a figure eight
   };
   std::optional<Execution> execution_;
+  std::optional<std::uint32_t> start_up_execute_;  ///< the start-up manoeuvre's, until it starts
   std::optional<rotor::RestPose> rest_pose_;  ///< from the latest valid odom
   Eigen::Vector2d contact_angles_ = Eigen::Vector2d::Zero();  ///< (u_o, v_o) of that odom
   InputMonitor odom_input_;
