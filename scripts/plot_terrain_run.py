@@ -363,7 +363,7 @@ def main(argv=None):
 
     reached = ("t = %.2f s" % s["reached"]) if s["reached"] is not None else "never"
     path_text = ("%d poses" % len(run["path"])) if run["path"] else "none in the %s" % run["source"]
-    steady = ("mean %.4f m, max %.4f m (%d samples)"
+    steady = ("mean %.3g m, max %.3g m (%d samples)"
               % (s["steady_mean"], s["steady_max"], s["steady_n"])) if s["steady_n"] else "no samples"
     series, what = commanded_rates(run)
     changes, pairs = sign_changes(series, args.steady_from)
