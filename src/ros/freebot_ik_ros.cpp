@@ -70,7 +70,7 @@ FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
   result_pub_ = nh.advertise<spherical_robots::FreebotGoalResult>("goal_result", 10, true);
   target_pub_ = nh.advertise<geometry_msgs::PoseStamped>("ik_target", 1, true);
-  state_sub_ = nh.subscribe("freebot_state", 10, &FreebotIkRos::onState, this);
+  state_sub_ = nh.subscribe("freebot_state", kLoopQueueSize, &FreebotIkRos::onState, this);
   work_.join(nh, pnh, {state_sub_});
   goal_sub_ = nh.subscribe("goal", 10, &FreebotIkRos::onGoal, this);
   solve_server_ = nh.advertiseService("solve_ik", &FreebotIkRos::onSolve, this);

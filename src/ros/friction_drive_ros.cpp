@@ -12,6 +12,7 @@
 #include "spherical_robots/RollerDrive.h"
 #include "spherical_robots/config/roller_config.hpp"
 #include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 #include "spherical_robots/ros/plant_clock.hpp"
 
@@ -60,7 +61,7 @@ FrictionDriveControllerRos::FrictionDriveControllerRos(ros::NodeHandle nh, ros::
       work_([this](const sensor_msgs::JointState& msg) { convert(msg); }, step_publications_),
       updater_(nh, pnh, pnh.getNamespace()) {
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
-  command_sub_ = nh.subscribe("drive/command", 10, &FrictionDriveControllerRos::onDriveCommand, this);
+  command_sub_ = nh.subscribe("drive/command", kLoopQueueSize, &FrictionDriveControllerRos::onDriveCommand, this);
   work_.join(nh, pnh, {command_sub_});
   updater_.setHardwareID("friction drive");
   updater_.add("friction drive inverse", this, &FrictionDriveControllerRos::diagnose);
@@ -105,7 +106,7 @@ FrictionDriveSimRos::FrictionDriveSimRos(ros::NodeHandle nh, ros::NodeHandle pnh
   drive_state_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "drive/state");
   drive_pub_ = step_publications_.advertise<spherical_robots::RollerDrive>(nh, "roller_drive");
   marker_pub_ = step_publications_.advertise<visualization_msgs::MarkerArray>(nh, "roller_markers");
-  state_sub_ = nh.subscribe("actuators/state", 10, &FrictionDriveSimRos::onActuatorState, this);
+  state_sub_ = nh.subscribe("actuators/state", kLoopQueueSize, &FrictionDriveSimRos::onActuatorState, this);
   work_.join(nh, pnh, {state_sub_});
   updater_.setHardwareID("friction drive");
   updater_.add("friction drive forward", this, &FrictionDriveSimRos::diagnose);

@@ -134,7 +134,7 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
 
   state_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/state", kLoopQueueSize);
   command_sub_ =
-      nh.subscribe("actuators/command", 10, &HardwareInterfaceSimRos::commandCallback, this);
+      nh.subscribe("actuators/command", kLoopQueueSize, &HardwareInterfaceSimRos::commandCallback, this);
   e_stop_sub_ = nh.subscribe("estop", 10, &HardwareInterfaceSimRos::eStopCallback, this);
   if (isLockstepParticipant(nh, pnh)) {
     lockstep_ = std::make_unique<LockstepParticipant>(

@@ -15,6 +15,7 @@
 #include "spherical_robots/hardware/simulated_actuators.hpp"
 #include "spherical_robots/norma/norma_simulation.hpp"
 #include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 #include "spherical_robots/ros/plant_clock.hpp"
 
@@ -74,8 +75,8 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   target_pub_ = step_publications_.advertise<geometry_msgs::PointStamped>(nh, "target");
   desired_path_pub_ = nh.advertise<nav_msgs::Path>("desired_path", 1, true);
   desired_path_pub_.publish(desiredPath(ros::Time::now()));
-  state_sub_ = nh.subscribe("norma_state", 10, &NormaControllerRos::onState, this);
-  actuator_sub_ = nh.subscribe("actuators/state", 10, &NormaControllerRos::onActuatorState, this);
+  state_sub_ = nh.subscribe("norma_state", kLoopQueueSize, &NormaControllerRos::onState, this);
+  actuator_sub_ = nh.subscribe("actuators/state", kLoopQueueSize, &NormaControllerRos::onActuatorState, this);
   updater_.setHardwareID("Norma");
   updater_.add("norma controller", this, &NormaControllerRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);

@@ -26,7 +26,7 @@ PlantLoop::PlantLoop(ros::NodeHandle nh, ros::NodeHandle pnh, const Defaults& de
 
 void PlantLoop::start(PlantModel& model, const LoopPublisher& state) {
   model_ = &model;
-  actuator_sub_ = nh_.subscribe("actuators/state", 10, &PlantLoop::onActuatorState, this);
+  actuator_sub_ = nh_.subscribe("actuators/state", kLoopQueueSize, &PlantLoop::onActuatorState, this);
   clock_ = makePlantClock(nh_, pnh_, step_, defaults_.pace,
                           [this](const ros::Time& now) { return tick(now); }, state.publisher(),
                           actuator_sub_);

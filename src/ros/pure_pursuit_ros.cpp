@@ -46,7 +46,7 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       radius_);
 
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
-  state_sub_ = nh.subscribe("terrain_state", 10, &PurePursuitRos::onTerrainState, this);
+  state_sub_ = nh.subscribe("terrain_state", kLoopQueueSize, &PurePursuitRos::onTerrainState, this);
   if (mode_ == Mode::Tracking) {
     surface_ = config::makeSurface(terrain_config.surface);
     path_ = parsedParam(pnh, "path", "circle", [&terrain_config](const std::string& name) {

@@ -82,7 +82,7 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
   done_pub_ = nh.advertise<std_msgs::UInt32>("execution_done", 1, true);
   execute_sub_ = pnh.subscribe("execute", 1, &RotorPlannerRos::onExecute, this);
-  odom_sub_ = nh.subscribe("odom", 10, &RotorPlannerRos::onOdometry, this);
+  odom_sub_ = nh.subscribe("odom", kLoopQueueSize, &RotorPlannerRos::onOdometry, this);
   if (isLockstepParticipant(nh, pnh)) {
     // Asked every command period, also between manoeuvres (it has nothing to send then).
     lockstep_ = std::make_unique<LockstepParticipant>(

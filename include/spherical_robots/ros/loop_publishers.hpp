@@ -20,7 +20,10 @@
 namespace spherical_robots {
 
 /// Messages a publisher of the loop holds for a subscriber that falls behind (a few seconds of
-/// the fastest topic, 1 kHz, at a few times real time).
+/// the fastest topic, 1 kHz, at a few times real time), and a participant's subscription to a
+/// loop input holds: a burst of foreign messages on the topic (a flood of bad terrain_state, 100
+/// in 0.2 s of wall time in hostile_input_roller) must not push the step's own message out of a
+/// short queue, or the participant waits for it in vain and the robot stops.
 constexpr std::uint32_t kLoopQueueSize = 5000;
 
 /// A publisher of a loop topic: each publish() notes the topic in its StepPublications.
