@@ -1,6 +1,7 @@
 #include "spherical_robots/ros/input_monitor.hpp"
 
 #include "spherical_robots/core/stamp.hpp"
+#include "spherical_robots/ros/conversions.hpp"
 
 #include <diagnostic_msgs/DiagnosticStatus.h>
 #include <ros/console.h>
@@ -60,8 +61,7 @@ void InputMonitor::reject(const std::string& reason) {
 }
 
 bool InputMonitor::fresh(const ros::Time& now) const {
-  return accepted_ != 0 && withinTimeout(static_cast<Nanoseconds>(last_accepted_.toNSec()),
-                                         static_cast<Nanoseconds>(now.toNSec()), timeout_);
+  return accepted_ != 0 && withinTimeout(nanosecondsOf(last_accepted_), nanosecondsOf(now), timeout_);
 }
 
 HealthLevel InputMonitor::health() { return health_.level(wallSeconds()); }

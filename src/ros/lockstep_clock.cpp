@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "spherical_robots/LockstepStep.h"
+#include "spherical_robots/ros/conversions.hpp"
 
 namespace spherical_robots {
 namespace {
@@ -33,8 +34,6 @@ class QueuedCall : public ros::CallbackInterface {
  private:
   std::function<void()> call_;
 };
-
-std::int64_t nanoseconds(const ros::Time& t) { return static_cast<std::int64_t>(t.toNSec()); }
 
 ros::Time fromNanoseconds(std::int64_t ns) {
   ros::Time t;
@@ -103,8 +102,8 @@ void LockstepClock::onAck(const ros::MessageEvent<spherical_robots::LockstepAck 
     }
     return;
   }
-  const AckOutcome outcome = sequencer_.acknowledge(sender, ack.participant, nanoseconds(ack.stamp),
-                                                    ack.published, nanoseconds(ack.next));
+  const AckOutcome outcome = sequencer_.acknowledge(sender, ack.participant, nanosecondsOf(ack.stamp),
+                                                    ack.published, nanosecondsOf(ack.next));
   if (outcome == AckOutcome::kAccepted) {
     pump();
     return;
@@ -191,7 +190,7 @@ void LockstepClock::runStepAt(const ros::Time& t) {
     clock_pub_.publish(clock);
   }
   const std::vector<std::string> published = tick_(now_);
-  sequencer_.beginStep(nanoseconds(now_), published, ros::WallTime::now().toSec());
+  sequencer_.beginStep(nanosecondsOf(now_), published, ros::WallTime::now().toSec());
   pump();
 }
 
@@ -217,7 +216,7 @@ void LockstepClock::pump() {
 }
 
 void LockstepClock::received(const std::string& topic, const ros::Time& stamp) {
-  inputs_.received(topic, nanoseconds(stamp));
+  inputs_.received(topic, nanosecondsOf(stamp));
   if (awaiting_inputs_) finishIfInputsIn();
 }
 

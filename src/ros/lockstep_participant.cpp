@@ -1,5 +1,7 @@
 #include "spherical_robots/ros/lockstep_participant.hpp"
 
+#include "spherical_robots/ros/conversions.hpp"
+
 #include <ros/console.h>
 
 #include <algorithm>
@@ -84,7 +86,7 @@ void LockstepParticipant::sendJoin(const ros::WallTimerEvent&) {
 }
 
 void LockstepParticipant::received(const std::string& topic, const ros::Time& stamp) {
-  inputs_.received(topic, static_cast<std::int64_t>(stamp.toNSec()));
+  inputs_.received(topic, nanosecondsOf(stamp));
   if (pending_) workIfReady();
 }
 
@@ -93,7 +95,7 @@ void LockstepParticipant::onRequest(const spherical_robots::LockstepStep& reques
   last_request_wall_ = ros::WallTime::now();
   std::vector<PublishedTopic> inputs;
   for (std::size_t i = 0; i < request.inputs.size() && i < request.input_stamps.size(); ++i)
-    inputs.push_back({request.inputs[i], static_cast<std::int64_t>(request.input_stamps[i].toNSec())});
+    inputs.push_back({request.inputs[i], nanosecondsOf(request.input_stamps[i])});
   if (pending_)
     ROS_WARN_STREAM("lock-step: a request for " << request.stamp << " s replaces the one for "
                                                 << *pending_ << " s, whose inputs never came");

@@ -1,6 +1,7 @@
 #include "spherical_robots/ros/plant_clock.hpp"
 
 #include "spherical_robots/core/stamp.hpp"
+#include "spherical_robots/ros/conversions.hpp"
 
 #include <ros/init.h>
 
@@ -14,8 +15,7 @@
 namespace spherical_robots {
 
 bool periodDue(const ros::Time& last, const ros::Time& now, double period) {
-  return periodDue(static_cast<Nanoseconds>(last.toNSec()), static_cast<Nanoseconds>(now.toNSec()),
-                   period);
+  return periodDue(nanosecondsOf(last), nanosecondsOf(now), period);
 }
 
 void PlantClock::report(diagnostic_updater::DiagnosticStatusWrapper& status) {

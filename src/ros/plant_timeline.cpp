@@ -5,14 +5,10 @@
 
 #include <exception>
 
+#include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 
 namespace spherical_robots {
-namespace {
-
-Nanoseconds nanosecondsOf(const ros::Time& t) { return static_cast<Nanoseconds>(t.toNSec()); }
-
-}  // namespace
 
 PlantTimeline::PlantTimeline(double duration, double max_clock_step)
     : timeline_(duration, max_clock_step) {}

@@ -164,7 +164,7 @@ terrain::DriveRates PurePursuitRos::track(const ros::Time& now) {
   if (!geometry_ || !input_.fresh(now)) return {};
   // Throws on a non-finite error or command; control() commands zero instead.
   const terrain::TrackingCommand tracked =
-      tracker_->command(static_cast<Nanoseconds>(now.toNSec()), *geometry_, tilt_);
+      tracker_->command(nanosecondsOf(now), *geometry_, tilt_);
   error_ = tracked.error;
   error_pub_.publish(conversions::toTrackingErrorMsg(error_, tracked.desired, kWorldFrame, now));
   geometry_msgs::PointStamped target;

@@ -23,6 +23,7 @@
 #include "spherical_robots/FreebotState.h"
 #include "spherical_robots/TerrainState.h"
 #include "spherical_robots/TrackingError.h"
+#include "spherical_robots/core/stamp.hpp"
 #include "spherical_robots/freebot/freebot_chain.hpp"
 #include "spherical_robots/terrain/teleop.hpp"
 #include "spherical_robots/terrain/pure_pursuit.hpp"
@@ -35,6 +36,9 @@ namespace spherical_robots {
 
 /// The fixed frame of every plant and controller.
 inline const std::string kWorldFrame = "world";
+
+/// A ROS time as the core's whole nanoseconds (core/stamp.hpp), which its decisions take.
+inline Nanoseconds nanosecondsOf(const ros::Time& t) { return static_cast<Nanoseconds>(t.toNSec()); }
 
 }  // namespace spherical_robots
 
