@@ -25,7 +25,7 @@ packages=(
   python3-diagnostic-updater python3-interactive-markers
   ros-robot-state-publisher rviz xvfb xauth x11-utils imagemagick
   python3-numpy python3-matplotlib
-  # scripts/derive_norma_dynamics.py
+  # derivations/derive_norma_dynamics.py
   python3-sympy
 )
 missing=()

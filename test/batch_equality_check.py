@@ -20,7 +20,6 @@ import argparse
 import csv
 import os
 import shutil
-import socket
 import subprocess
 import sys
 import tempfile
@@ -31,6 +30,8 @@ import unittest
 import rosgraph
 import roslib.packages
 import rospkg
+
+from spherical_robots_testing import free_port, launch_file
 
 PKG = 'spherical_robots'
 
@@ -107,17 +108,6 @@ def roller_case(duration, extra_args):
 
 
 STACKS = {'terrain': terrain_case, 'roller': roller_case, 'norma': norma_case}
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(('localhost', 0))
-        return s.getsockname()[1]
-
-
-def launch_file(name):
-    """By its full path, as $(find) resolves it (lockstep_repeat_check.py says why)."""
-    return os.path.join(rospkg.RosPack().get_path(PKG), 'launch', name)
 
 
 def find_sphere_sim():

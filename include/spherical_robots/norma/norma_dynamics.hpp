@@ -3,7 +3,7 @@
 // Euler-Lagrange dynamics M(q) q̈ + C(q, q̇) q̇ + G(q) = U (eq 46) with q = [θ, α, φ, δ] and the
 // planar rolling kinematics of eqs 6 and 12. No ROS.
 //
-// M, ∂M/∂q and G are generated from the Lagrangian of eq 45 by scripts/derive_norma_dynamics.py;
+// M, ∂M/∂q and G are generated from the Lagrangian of eq 45 by derivations/derive_norma_dynamics.py;
 // C is the Christoffel matrix of M (A.23, A.24), so Ṁ − 2C is skew-symmetric. The appendix's
 // M (A.3-A.21) differs from the text's in M11 only: it lacks the shell-and-shaft yaw kinetic
 // energy ½ I_Sp^z (θ̇ S_φ)² of eq 37 (docs/errata.md, N3). Both are offered.

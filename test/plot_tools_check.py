@@ -32,8 +32,9 @@ from sensor_msgs.msg import JointState
 from spherical_robots.msg import (FreebotGoalResult, FreebotState, NormaState, TerrainState,
                                   TrackingError)
 
-HERE = os.path.dirname(os.path.realpath(__file__))
-sys.path.insert(0, HERE)
+# The plotting tools are user programs in scripts/, beside this test's directory.
+SCRIPTS = os.path.join(os.path.dirname(os.path.realpath(__file__)), '..', 'scripts')
+sys.path.insert(0, SCRIPTS)
 import plot_freebot_run  # noqa: E402
 import plot_norma_run  # noqa: E402
 
@@ -47,7 +48,7 @@ def yaw(angle):
 
 
 def run_tool(tool, *args):
-    result = subprocess.run([sys.executable, os.path.join(HERE, tool)] + list(args),
+    result = subprocess.run([sys.executable, os.path.join(SCRIPTS, tool)] + list(args),
                             capture_output=True, text=True, timeout=120)
     return result.returncode, result.stdout, result.stderr
 

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Symbolic check of the rotor paper's eqs 2-5, 8-10, 15-20 and 26-30 (Svinin et al.).
 
-Run: /usr/bin/python3 scripts/rotor_check_equations.py   (prints each check; exit 1 on a failure)
+Run: /usr/bin/python3 derivations/rotor_check_equations.py   (prints each check; exit 1 on a failure)
 """
 import sys
 import sympy as sp

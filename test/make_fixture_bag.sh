@@ -4,11 +4,11 @@
 # the stack's record:=...), then rewritten with only the topics the tests need, bag time = header
 # stamp, LZ4-compressed.
 #
-#   scripts/make_fixture_bag.sh terrain [OUT.bag] [DURATION]  (test/data/terrain_3R_circle_fixture.bag, 25)
-#   scripts/make_fixture_bag.sh roller  [OUT.bag] [DURATION]  (test/data/roller_2R_circle_fixture.bag, 25)
-#   scripts/make_fixture_bag.sh norma   [OUT.bag] [DURATION]  (test/data/norma_paper_fixture.bag, 45)
-#   scripts/make_fixture_bag.sh rotor   [OUT.bag] [DURATION]  (test/data/rotor_k2.5_n2_fixture.bag, 14)
-#   scripts/make_fixture_bag.sh freebot [OUT.bag] [DURATION]  (test/data/freebot_ABC_fixture.bag, 20)
+#   test/make_fixture_bag.sh terrain [OUT.bag] [DURATION]  (test/data/terrain_3R_circle_fixture.bag, 25)
+#   test/make_fixture_bag.sh roller  [OUT.bag] [DURATION]  (test/data/roller_2R_circle_fixture.bag, 25)
+#   test/make_fixture_bag.sh norma   [OUT.bag] [DURATION]  (test/data/norma_paper_fixture.bag, 45)
+#   test/make_fixture_bag.sh rotor   [OUT.bag] [DURATION]  (test/data/rotor_k2.5_n2_fixture.bag, 14)
+#   test/make_fixture_bag.sh freebot [OUT.bag] [DURATION]  (test/data/freebot_ABC_fixture.bag, 20)
 #
 # Needs the built package (it sources install/setup.sh of the repository if roslaunch cannot find
 # spherical_robots). Runs its own master on a free port, so it can run beside another ROS master.

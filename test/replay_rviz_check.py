@@ -2,7 +2,7 @@
 """rostest of launch/replay.launch: rviz under Xvfb shows a replayed stack's bag
 (test/replay_rviz.test: terrain; test/replay_rviz_{roller,norma,rotor,freebot}.test).
 
-The bag (test/data/*_fixture.bag, scripts/make_fixture_bag.sh) plays in a loop at ~rate x. Private
+The bag (test/data/*_fixture.bag, test/make_fixture_bag.sh) plays in a loop at ~rate x. Private
 params: ~ns (the stack's namespace, sphere), ~rviz_config, ~robot_frames (the frames whose spheres
 must show: [<ns>/base_link]), ~robot_radius (their radius, 0.2 m), ~robot_reference ("ring": the
 robot is judged against the scene around it, for a terrain; "background": against the panel's

@@ -15,14 +15,14 @@ import argparse
 import io
 import os
 import shutil
-import socket
 import subprocess
 import sys
 import tempfile
 import unittest
 
 import rosbag
-import rospkg
+
+from spherical_robots_testing import free_port, launch_file
 
 PKG = 'spherical_robots'
 
@@ -47,27 +47,13 @@ STACKS = {
 # (execute:=true, the default), at its first command period.
 
 
-def free_port():
-    with socket.socket() as s:
-        s.bind(('localhost', 0))
-        return s.getsockname()[1]
-
-
-def launch_file(stack):
-    """The stack's launch file by its full path, as $(find) resolves it. `roslaunch PKG FILE`
-    searches the whole package directory, and when the package's path is its source tree with the
-    colcon workspace inside it (under colcon test) it finds the installed copy too and refuses:
-    "multiple files named [terrain_stack.launch]"."""
-    return os.path.join(rospkg.RosPack().get_path(PKG), 'launch', '%s_stack.launch' % stack)
-
-
 def run_stack(stack, duration, extra_args, bag, busy_loops):
     port = free_port()
     env = dict(os.environ, ROS_MASTER_URI='http://localhost:%d' % port)
     env['ROS_HOME'] = os.path.dirname(bag)
     busy = [subprocess.Popen(['yes'], stdout=subprocess.DEVNULL) for _ in range(busy_loops)]
     try:
-        command = ['roslaunch', '-p', str(port), launch_file(stack),
+        command = ['roslaunch', '-p', str(port), launch_file('%s_stack.launch' % stack),
                    'duration:=%g' % duration, 'record:=%s' % bag] + extra_args
         with open(bag + '.log', 'w') as log:
             child = subprocess.run(command, env=env, stdout=log, stderr=subprocess.STDOUT,

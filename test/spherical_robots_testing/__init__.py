@@ -1,19 +1,25 @@
-"""What the package's rostest scripts share (scripts/stack_check.py, freebot_stack_check.py,
-rotor_stack_check.py): a topic recorder that notes each message's simulated arrival time, and
-waits on conditions and on simulated time, each bounded by a wall-clock deadline so that a stack
-that never gets there fails the test instead of hanging it.
+"""What the package's test programs share (test/*_check.py): a topic recorder that notes each
+message's simulated arrival time, and waits on conditions and on simulated time, each bounded by a
+wall-clock deadline so that a stack that never gets there fails the test instead of hanging it;
+and, for the programs that launch stacks on masters of their own, a free port and a launch file's
+path.
 
-Installed by catkin_python_setup() (setup.py), so `import spherical_robots_testing` works from
-the devel and the install space alike.
+Not installed: it sits beside the test programs, which run from the package's source tree (the
+directory of the running program is on Python's path).
 """
 import math
+import os
+import socket
 import threading
 import time
 
+import rospkg
 import rospy
 
 __all__ = ['Recorder', 'wait_until', 'sim_sleep', 'publish_until', 'first_at_rest',
-           'quaternion_angle']
+           'quaternion_angle', 'free_port', 'launch_file']
+
+PKG = 'spherical_robots'
 
 
 class Recorder:
@@ -93,3 +99,18 @@ def quaternion_angle(a, b):
     nb = math.sqrt(sum(c * c for c in b))
     dot = abs(sum(x * y for x, y in zip(a, b))) / (na * nb)
     return 2.0 * math.acos(min(1.0, dot))
+
+
+def free_port():
+    """A TCP port nobody listens on now, for a ROS master of the caller's own."""
+    with socket.socket() as s:
+        s.bind(('localhost', 0))
+        return s.getsockname()[1]
+
+
+def launch_file(name):
+    """The package's launch file by its full path, as $(find) resolves it. `roslaunch PKG FILE`
+    searches the whole package directory, and when the package's path is its source tree with the
+    colcon workspace inside it (under colcon test) it finds the installed copy too and refuses:
+    "multiple files named [terrain_stack.launch]"."""
+    return os.path.join(rospkg.RosPack().get_path(PKG), 'launch', name)
