@@ -1,4 +1,4 @@
-// Core types <-> ROS messages (src/ros/conversions.cpp), without a master.
+// The standard messages <-> core types (src/ros/conversions.cpp), without a master.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,24 +7,12 @@
 
 #include "expect_invalid_argument.hpp"
 #include "spherical_robots/ros/conversions.hpp"
-#include "spherical_robots/terrain/reference_path.hpp"
-#include "spherical_robots/terrain/surface.hpp"
-#include "spherical_robots/terrain/tangent_frame.hpp"
 
-namespace sr = spherical_robots;
 namespace conv = spherical_robots::conversions;
-using sr::terrain::RobotType;
 
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-sensor_msgs::JointState jointState(std::vector<std::string> names, std::vector<double> velocities) {
-  sensor_msgs::JointState msg;
-  msg.name = std::move(names);
-  msg.velocity = std::move(velocities);
-  return msg;
-}
 
 geometry_msgs::Twist twist(double vx, double vy, double wz) {
   geometry_msgs::Twist msg;
@@ -34,71 +22,9 @@ geometry_msgs::Twist twist(double vx, double vy, double wz) {
   return msg;
 }
 
-constexpr double kMaxRate = 100.0;     // [rad/s]
-constexpr double kMaxTwist = 10.0;     // [m/s, rad/s]
-constexpr double kMaxPosition = 1e3;   // [m]
+constexpr double kMaxTwist = 10.0;  // [m/s, rad/s]
 
 }  // namespace
-
-TEST(JointStateConversion, ReadsRatesByNameInAnyOrder) {
-  const auto rates = conv::ratesFromJointState(
-      RobotType::ThreeAxisRolling, jointState({"psi", "theta", "extra", "phi"}, {3.0, 1.0, 9.0, 2.0}), kMaxRate);
-  EXPECT_EQ(rates.roll_rate, 1.0);
-  EXPECT_EQ(rates.lateral_rate, 2.0);
-  EXPECT_EQ(rates.turn_rate, 3.0);
-}
-
-TEST(JointStateConversion, UnactuatedRatesAreZero) {
-  const auto rt = conv::ratesFromJointState(RobotType::RollingAndTurning,
-                                            jointState({"theta", "psi", "phi"}, {1.0, 3.0, 2.0}), kMaxRate);
-  EXPECT_EQ(rt.roll_rate, 1.0);
-  EXPECT_EQ(rt.lateral_rate, 0.0);
-  EXPECT_EQ(rt.turn_rate, 3.0);
-  const auto rs = conv::ratesFromJointState(RobotType::RollingAndSteering,
-                                            jointState({"alpha", "phi", "psi"}, {1.0, 2.0, 3.0}), kMaxRate);
-  EXPECT_EQ(rs.roll_rate, 1.0);
-  EXPECT_EQ(rs.lateral_rate, 2.0);
-  EXPECT_EQ(rs.turn_rate, 0.0);
-}
-
-TEST(JointStateConversion, RejectsMissingNamesNonFiniteValuesAndShortArrays) {
-  EXPECT_THROW(conv::ratesFromJointState(RobotType::TwoAxisRolling, jointState({"theta"}, {1.0}), kMaxRate),
-               std::invalid_argument);
-  EXPECT_THROW(conv::ratesFromJointState(RobotType::TwoAxisRolling,
-                                         jointState({"theta", "phi"}, {1.0, kNaN}), kMaxRate),
-               std::invalid_argument);
-  EXPECT_THROW(conv::ratesFromJointState(RobotType::TwoAxisRolling,
-                                         jointState({"theta", "phi"}, {1.0}), kMaxRate),
-               std::invalid_argument);
-  // Finite but implausible: 1e300 overflows two operations later. The bound itself is a rate.
-  EXPECT_INVALID_ARGUMENT(conv::ratesFromJointState(RobotType::TwoAxisRolling,
-                                                    jointState({"theta", "phi"}, {1.0, -1e300}),
-                                                    kMaxRate),
-                          "phi", "100", "2R");
-  EXPECT_NO_THROW(conv::ratesFromJointState(RobotType::TwoAxisRolling,
-                                            jointState({"theta", "phi"}, {1.0, -kMaxRate}),
-                                            kMaxRate));
-  // A non-finite value of a joint the type does not have is none of its business.
-  EXPECT_NO_THROW(conv::ratesFromJointState(RobotType::TwoAxisRolling,
-                                            jointState({"theta", "phi", "psi"}, {1.0, 2.0, kNaN}), kMaxRate));
-}
-
-TEST(JointStateConversion, WritesTheTypesActuatorsOnly) {
-  const sr::terrain::DriveRates rates{1.0, 2.0, 3.0};
-  const auto msg = conv::jointStateFromRates(RobotType::RollingAndTurning, rates, ros::Time(5.0));
-  EXPECT_EQ(msg.name, (std::vector<std::string>{"theta", "psi"}));
-  EXPECT_EQ(msg.velocity, (std::vector<double>{1.0, 3.0}));
-  EXPECT_TRUE(msg.position.empty());
-  EXPECT_EQ(msg.header.stamp, ros::Time(5.0));
-  for (RobotType type : {RobotType::ThreeAxisRolling, RobotType::TwoAxisRolling,
-                         RobotType::RollingAndTurning, RobotType::RollingAndSteering}) {
-    const auto round_trip = conv::ratesFromJointState(type, conv::jointStateFromRates(type, rates, {}), kMaxRate);
-    const auto expected = sr::terrain::keepActuated(type, rates);
-    EXPECT_EQ(round_trip.roll_rate, expected.roll_rate);
-    EXPECT_EQ(round_trip.lateral_rate, expected.lateral_rate);
-    EXPECT_EQ(round_trip.turn_rate, expected.turn_rate);
-  }
-}
 
 TEST(TwistConversion, TakesThePlanarPartAndListsTheRest) {
   geometry_msgs::Twist msg = twist(0.2, 0.1, 0.5);
@@ -115,62 +41,6 @@ TEST(TwistConversion, TakesThePlanarPartAndListsTheRest) {
   EXPECT_INVALID_ARGUMENT(conv::planarTwist(twist(0, 0, -11.0), kMaxTwist), "angular.z");
 }
 
-TEST(TerrainStateConversion, GeometryRoundTrip) {
-  const sr::terrain::CosineSurface surface(0.2, 2.0);
-  const double x = 0.7, y = -0.4, psi = 1.1, radius = 0.2;
-  sr::terrain::ContactGeometry geometry;
-  geometry.gradient = surface.gradient(x, y);
-  geometry.heading_frame = sr::terrain::headingFrame(geometry.gradient, psi);
-  geometry.contact_point = {x, y, surface.height(x, y)};
-  geometry.centre = geometry.contact_point + radius * geometry.heading_frame.col(2);
-  sr::terrain::TerrainState state;
-  state.x = x;
-  state.y = y;
-  state.psi = psi;
-
-  const auto msg = conv::toTerrainStateMsg(RobotType::ThreeAxisRolling,
-                                           sr::terrain::ContactModel::Paper, state, geometry,
-                                           {1.0, 2.0, 3.0}, ros::Time(2.0));
-  EXPECT_EQ(msg.robot_type, "3R");
-  EXPECT_EQ(msg.contact_model, "paper");
-  EXPECT_EQ(msg.header.frame_id, "world");
-  EXPECT_EQ(msg.turn_rate, 3.0);
-
-  const auto back = conv::contactGeometryFromMsg(msg, kMaxPosition);
-  EXPECT_TRUE(back.contact_point.isApprox(geometry.contact_point, 1e-12));
-  EXPECT_TRUE(back.centre.isApprox(geometry.centre, 1e-12));
-  EXPECT_TRUE(back.heading_frame.isApprox(geometry.heading_frame, 1e-12));
-  EXPECT_TRUE(back.gradient.isApprox(geometry.gradient, 1e-12));
-}
-
-TEST(TerrainStateConversion, RejectsBadGeometry) {
-  spherical_robots::TerrainState msg;
-  msg.normal.z = 1.0;
-  msg.heading.x = 1.0;
-  EXPECT_NO_THROW(conv::contactGeometryFromMsg(msg, kMaxPosition));
-
-  auto bad = msg;
-  bad.contact_point.y = kNaN;
-  EXPECT_THROW(conv::contactGeometryFromMsg(bad, kMaxPosition), std::invalid_argument);
-  bad = msg;
-  bad.contact_point.x = 1e300;
-  EXPECT_INVALID_ARGUMENT(conv::contactGeometryFromMsg(bad, kMaxPosition), "contact_point.x",
-                          "1000");
-  bad = msg;
-  bad.centre.z = -2e3;
-  EXPECT_INVALID_ARGUMENT(conv::contactGeometryFromMsg(bad, kMaxPosition), "centre.z");
-  bad = msg;
-  bad.normal.z = 2.0;  // not unit
-  EXPECT_THROW(conv::contactGeometryFromMsg(bad, kMaxPosition), std::invalid_argument);
-  bad = msg;
-  bad.heading.x = 0.0;  // h = n
-  bad.heading.z = 1.0;
-  EXPECT_THROW(conv::contactGeometryFromMsg(bad, kMaxPosition), std::invalid_argument);
-  bad = msg;
-  bad.normal.z = -1.0;  // points down
-  EXPECT_THROW(conv::contactGeometryFromMsg(bad, kMaxPosition), std::invalid_argument);
-}
-
 TEST(OdometryConversion, TwistIsInTheChildFrame) {
   // base_link turned 90 degrees about z: world +x is body -y.
   const Eigen::Quaterniond orientation(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
@@ -184,78 +54,40 @@ TEST(OdometryConversion, TwistIsInTheChildFrame) {
   EXPECT_NEAR(msg.pose.pose.orientation.z, std::sqrt(0.5), 1e-12);
 }
 
-TEST(Visualisation, SampledPathClosesOnTheSurface) {
-  const sr::terrain::CosineSurface surface(0.2, 2.0);
-  const sr::terrain::CirclePath circle(2.0, 0.05);
-  const auto path = conv::sampledPath(circle, surface, 100, "world", ros::Time(1.0));
-  ASSERT_EQ(path.poses.size(), 100u);
-  for (const auto& pose : path.poses) {
-    const auto& p = pose.pose.position;
-    EXPECT_NEAR(std::hypot(p.x, p.y), 2.0, 1e-12);
-    EXPECT_NEAR(p.z, surface.height(p.x, p.y), 1e-12);
-  }
-  EXPECT_NEAR(path.poses.front().pose.position.x, path.poses.back().pose.position.x, 1e-9);
-  EXPECT_NEAR(path.poses.front().pose.position.y, path.poses.back().pose.position.y, 1e-9);
-  EXPECT_THROW(conv::sampledPath(circle, surface, 1, "world", {}), std::invalid_argument);
+TEST(JointStateConversion, FieldsAsGivenAndReadBackByName) {
+  const auto msg = conv::jointState({"a", "b"}, {1.0, 2.0}, {3.0, 4.0}, {}, ros::Time(5.0));
+  EXPECT_EQ(msg.header.stamp, ros::Time(5.0));
+  EXPECT_EQ(msg.position, (std::vector<double>{1.0, 2.0}));
+  EXPECT_TRUE(msg.effort.empty());
+  EXPECT_EQ(conv::velocitiesByName(msg, {"b", "a"}, 10.0), (std::vector<double>{4.0, 3.0}));
+  EXPECT_THROW(conv::velocitiesByName(msg, {"b"}, 3.5), std::invalid_argument);  // |4| > 3.5
+  EXPECT_THROW(conv::effortsByName(msg, {"a"}, 10.0), std::invalid_argument);    // no efforts
 }
 
-TEST(Visualisation, SurfaceMeshCoversTheSquare) {
-  const sr::terrain::CosineSurface surface(0.2, 2.0);
-  const auto mesh = conv::surfaceMesh(surface, 3.0, 0.1, "world", ros::Time(1.0));
-  EXPECT_EQ(mesh.type, visualization_msgs::Marker::TRIANGLE_LIST);
-  ASSERT_EQ(mesh.points.size(), 60u * 60u * 6u);
-  EXPECT_EQ(mesh.colors.size(), mesh.points.size());
-  for (const auto& p : mesh.points) {
-    EXPECT_LE(std::abs(p.x), 3.0 + 1e-12);
-    EXPECT_LE(std::abs(p.y), 3.0 + 1e-12);
-    EXPECT_NEAR(p.z, surface.height(p.x, p.y), 1e-12);
-  }
-  EXPECT_THROW(conv::surfaceMesh(surface, 3.0, 0.0, "world", {}), std::invalid_argument);
-  EXPECT_THROW(conv::surfaceMesh(surface, 3.0, 1e-4, "world", {}), std::invalid_argument);
+TEST(QuaternionConversion, ToMessageAndBackIsTheSameRotation) {
+  const Eigen::Quaterniond q(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, -2, 3).normalized()));
+  const geometry_msgs::Quaternion msg = conv::toQuaternion(q);
+  // Message order (x, y, z, w) against Eigen's (w, x, y, z).
+  EXPECT_DOUBLE_EQ(msg.w, q.w());
+  EXPECT_DOUBLE_EQ(msg.x, q.x());
+  EXPECT_LT(conv::fromQuaternion(msg, "q").angularDistance(q), 1e-15);
+  geometry_msgs::Quaternion scaled = msg;
+  scaled.w *= 2.0;
+  EXPECT_THROW(conv::fromQuaternion(scaled, "q"), std::invalid_argument);
+  scaled.w = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(conv::fromQuaternion(scaled, "q"), std::invalid_argument);
 }
 
-TEST(FreebotConversion, WheelNamesPairsAndOrder) {
-  const std::vector<std::string> names = sr::conversions::freebotWheelNames(2);
-  EXPECT_EQ(names, (std::vector<std::string>{"module1_wheel_right", "module1_wheel_left",
-                                             "module2_wheel_right", "module2_wheel_left"}));
-  // Measured state in another order, with an extra actuator: read by name.
-  sensor_msgs::JointState msg;
-  msg.name = {"module2_wheel_left", "other", "module1_wheel_right", "module2_wheel_right",
-              "module1_wheel_left"};
-  msg.velocity = {4.0, 9.0, 1.0, 3.0, 2.0};
-  const auto wheels = sr::conversions::wheelSpeedsFromJointState(msg, 2, kMaxRate);
-  ASSERT_EQ(wheels.size(), 2u);
-  EXPECT_EQ(wheels[0].right, 1.0);
-  EXPECT_EQ(wheels[0].left, 2.0);
-  EXPECT_EQ(wheels[1].right, 3.0);
-  EXPECT_EQ(wheels[1].left, 4.0);
-  const sensor_msgs::JointState command =
-      sr::conversions::jointStateFromWheelSpeeds(wheels, ros::Time(1.0));
-  EXPECT_EQ(command.name, names);
-  EXPECT_EQ(command.velocity, (std::vector<double>{1.0, 2.0, 3.0, 4.0}));
-  msg.name.pop_back();
-  EXPECT_THROW(sr::conversions::wheelSpeedsFromJointState(msg, 2, kMaxRate), std::invalid_argument);
-}
-
-TEST(FreebotConversion, ChainStateRoundTripAndRejections) {
-  sr::freebot::ChainState state;
-  const Eigen::Quaterniond q(Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 0).normalized()));
-  state.joints = {{q, q.conjugate()}, {}};
-  state.headings = {0.5, -1.0};
-  spherical_robots::FreebotState msg = sr::conversions::toFreebotStateMsg(
-      state, sr::freebot::LinkPose{}, "world", ros::Time(2.0));
-  const sr::freebot::ChainState back = sr::conversions::chainStateFromMsg(msg);
-  ASSERT_EQ(back.joints.size(), 2u);
-  EXPECT_LT(back.joints[0].link.angularDistance(q), 1e-15);
-  EXPECT_LT(back.joints[0].base.angularDistance(q.conjugate()), 1e-15);
-  EXPECT_EQ(back.headings, state.headings);
-  msg.heading.pop_back();
-  EXPECT_THROW(sr::conversions::chainStateFromMsg(msg), std::invalid_argument);
-  msg.heading.push_back(std::numeric_limits<double>::quiet_NaN());
-  EXPECT_THROW(sr::conversions::chainStateFromMsg(msg), std::invalid_argument);
-  msg.heading.back() = 0.0;
-  msg.link[1].w = 2.0;  // not unit
-  EXPECT_THROW(sr::conversions::chainStateFromMsg(msg), std::invalid_argument);
+TEST(MarkerConversion, AddedOpaqueIdentityPoseInItsFrame) {
+  const auto m = conv::marker("ns", 3, visualization_msgs::Marker::ARROW, "odom", ros::Time(2.0));
+  EXPECT_EQ(m.header.frame_id, "odom");
+  EXPECT_EQ(m.header.stamp, ros::Time(2.0));
+  EXPECT_EQ(m.action, visualization_msgs::Marker::ADD);
+  EXPECT_EQ(m.pose.orientation.w, 1.0);
+  EXPECT_EQ(m.color.a, 1.0f);
+  const auto p = conv::toPointStamped({1.0, 2.0, 3.0}, "world", ros::Time(4.0));
+  EXPECT_EQ(p.header.frame_id, "world");
+  EXPECT_EQ(p.point.z, 3.0);
 }
 
 int main(int argc, char** argv) {

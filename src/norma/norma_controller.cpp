@@ -9,6 +9,17 @@
 #include "spherical_robots/core/validation.hpp"
 
 namespace spherical_robots::norma {
+
+ControllerKind controllerKindFromString(const std::string& name) {
+  if (name == "paper") return ControllerKind::kPaper;
+  if (name == "tracking") return ControllerKind::kTracking;
+  throw std::invalid_argument("unknown Norma controller '" + name + "' (expected paper or tracking)");
+}
+
+std::string toString(ControllerKind kind) {
+  return kind == ControllerKind::kPaper ? "paper" : "tracking";
+}
+
 namespace {
 
 void requireFinitePid(const PidGains& pid, const std::string& name) {

@@ -3,11 +3,23 @@
 #include <Eigen/Cholesky>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 #include "spherical_robots/core/sin_cos.hpp"
 #include "spherical_robots/core/validation.hpp"
 
 namespace spherical_robots::norma {
+
+LagrangianVariant lagrangianVariantFromString(const std::string& name) {
+  if (name == "text") return LagrangianVariant::kText;
+  if (name == "appendix") return LagrangianVariant::kAppendix;
+  throw std::invalid_argument("unknown Lagrangian variant '" + name + "' (expected text or appendix)");
+}
+
+std::string toString(LagrangianVariant variant) {
+  return variant == LagrangianVariant::kText ? "text" : "appendix";
+}
+
 namespace {
 
 #include "norma_dynamics_terms.inc"

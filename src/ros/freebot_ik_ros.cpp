@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/ros/freebot_conversions.hpp"
 #include "spherical_robots/ros/freebot_plant_ros.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 

@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "spherical_robots/FreebotState.h"
-#include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/ros/freebot_conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 
 namespace spherical_robots {

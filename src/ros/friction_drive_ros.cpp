@@ -2,16 +2,12 @@
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
 
-#include <geometry_msgs/Point.h>
-#include <visualization_msgs/MarkerArray.h>
-
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <stdexcept>
 
-#include "spherical_robots/RollerDrive.h"
 #include "spherical_robots/config/roller_config.hpp"
-#include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/ros/roller_conversions.hpp"
+#include "spherical_robots/ros/terrain_conversions.hpp"
 #include "spherical_robots/ros/loop_publishers.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 #include "spherical_robots/ros/plant_clock.hpp"
@@ -21,8 +17,6 @@ namespace {
 
 const std::vector<std::string> kMotorNames(config::kRollerActuatorNames.begin(),
                                            config::kRollerActuatorNames.end());
-constexpr double kRollerWidth = 0.02;       // [m] of the roller markers
-constexpr double kSlipArrowScale = 1.0;     // [m per m/s] of the slip arrows
 
 roller::RollerActuation loadActuation(const ros::NodeHandle& nh) {
   return config::makeRollerActuation(config::loadRollerConfig(RosParameterSource(nh)),
@@ -35,20 +29,6 @@ void describeDrive(const roller::RollerActuation& actuation, diagnostic_updater:
   status.add("roller radius [m]", actuation.rollerRadius());
   status.addf("alpha1, alpha2 [deg]", "%.6g, %.6g", rollers[0].alpha * 180.0 / M_PI,
               rollers[1].alpha * 180.0 / M_PI);
-}
-
-visualization_msgs::Marker marker(const std::string& frame, const ros::Time& stamp, int id,
-                                  int type) {
-  visualization_msgs::Marker m;
-  m.header.frame_id = frame;
-  m.header.stamp = stamp;
-  m.ns = "roller_drive";
-  m.id = id;
-  m.type = type;
-  m.action = visualization_msgs::Marker::ADD;
-  m.pose.orientation.w = 1.0;
-  m.color.a = 1.0;
-  return m;
 }
 
 }  // namespace
@@ -134,55 +114,15 @@ void FrictionDriveSimRos::drive(const sensor_msgs::JointState& msg) {
   drive_state_pub_.publish(conversions::jointStateFromRates(
       terrain::RobotType::TwoAxisRolling, roller::rollingRates(state.omega), msg.header.stamp));
 
-  spherical_robots::RollerDrive drive;
-  drive.header.stamp = msg.header.stamp;
-  drive.roller_speed = {state.speeds.v1, state.speeds.v2};
-  drive.slip = {state.slip[0], state.slip[1]};
-  drive.omega = conversions::toVector3(state.omega);
-  drive.speed = state.motion.speed;
-  drive.direction = state.motion.direction;
-  drive.rho = state.motion.rho;
-  drive_pub_.publish(drive);
+  drive_pub_.publish(conversions::toRollerDriveMsg(state, msg.header.stamp));
 
   // On the message's time, not the clock's, so that lock-step runs publish the same markers.
   if (periodDue(last_markers_, msg.header.stamp, marker_period_)) {
     last_markers_ = msg.header.stamp;
-    publishMarkers(state, msg.header.stamp);
+    marker_pub_.publish(conversions::rollerMarkers(actuation_.drive().geometry(),
+                                                   actuation_.rollerRadius(), state,
+                                                   heading_frame_, msg.header.stamp));
   }
-}
-
-void FrictionDriveSimRos::publishMarkers(const roller::DriveState& state, const ros::Time& stamp) {
-  // The heading frame sits at the contact point with the floor: the centre O is r above it.
-  const auto& geometry = actuation_.drive().geometry();
-  const Eigen::Vector3d centre(0.0, 0.0, geometry.radius());
-  visualization_msgs::MarkerArray markers;
-  for (std::size_t i = 0; i < 2; ++i) {
-    const roller::RollerContact& contact = geometry.rollers()[i];
-    const Eigen::Vector3d outward = contact.point.normalized();
-    auto body = marker(heading_frame_, stamp, static_cast<int>(i), visualization_msgs::Marker::CYLINDER);
-    body.pose.position = conversions::toPoint(centre + contact.point + actuation_.rollerRadius() * outward);
-    body.pose.orientation = conversions::toQuaternion(
-        Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), contact.axis));
-    body.scale.x = body.scale.y = 2.0 * actuation_.rollerRadius();
-    body.scale.z = kRollerWidth;
-    body.color.r = 0.2f;
-    body.color.g = 0.2f;
-    body.color.b = 0.8f;
-    markers.markers.push_back(body);
-
-    // Slip ζ_i = S_i X_i (eq 27), drawn from the contact point.
-    auto slip = marker(heading_frame_, stamp, static_cast<int>(2 + i), visualization_msgs::Marker::ARROW);
-    const Eigen::Vector3d start = centre + contact.point;
-    slip.points = {conversions::toPoint(start),
-                   conversions::toPoint(start + kSlipArrowScale * state.slip[i] * contact.tangent)};
-    slip.scale.x = 0.01;
-    slip.scale.y = 0.02;
-    slip.scale.z = 0.02;
-    slip.color.r = 1.0f;
-    slip.color.g = 0.5f;
-    markers.markers.push_back(slip);
-  }
-  marker_pub_.publish(markers);
 }
 
 void FrictionDriveSimRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "spherical_robots/config/actuator_models.hpp"
+#include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 #include "spherical_robots/ros/shared_message.hpp"
 
@@ -126,8 +127,6 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
       max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
       updater_(nh, pnh, pnh.getNamespace()) {
   const double rate = positiveParam(pnh, "rate", 100.0);
-  state_msg_.name = actuators_.names();
-
   updater_.setHardwareID("simulated");
   updater_.add("actuators", this, &HardwareInterfaceSimRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
@@ -235,12 +234,10 @@ void HardwareInterfaceSimRos::followClock(const ros::Time& now) {
 }
 
 void HardwareInterfaceSimRos::publishState(const ros::Time& stamp) {
-  state_msg_.header.stamp = stamp;
   // The measurement (quantised, noisy if so configured), not the true state.
-  state_msg_.position = actuators_.measuredPositions();
-  state_msg_.velocity = actuators_.measuredVelocities();
-  state_msg_.effort = actuators_.efforts();
-  state_pub_.publish(shared(state_msg_));
+  state_pub_.publish(shared(conversions::jointState(
+      actuators_.names(), actuators_.measuredPositions(), actuators_.measuredVelocities(),
+      actuators_.efforts(), stamp)));
 }
 
 void HardwareInterfaceSimRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

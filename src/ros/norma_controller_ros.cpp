@@ -10,11 +10,10 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "spherical_robots/TrackingError.h"
 #include "spherical_robots/config/norma_description.hpp"
 #include "spherical_robots/hardware/simulated_actuators.hpp"
 #include "spherical_robots/norma/norma_simulation.hpp"
-#include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/ros/norma_conversions.hpp"
 #include "spherical_robots/ros/loop_publishers.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 #include "spherical_robots/ros/plant_clock.hpp"
@@ -25,33 +24,6 @@ namespace {
 constexpr double kPathPeriod = 200.0 * M_PI;  // [s] eq 52 repeats after 2π / 0.01
 constexpr int kDesiredPathSamples = 2000;
 constexpr double kLateAge = 0.002;           // [s] two 1 ms ticks: the delay the 1 kHz loop is built for
-const std::vector<std::string> kActuators = {"pendulum_motor", "slider_motor"};
-
-norma::ControllerKind controllerFromString(const std::string& name) {
-  if (name == "paper") return norma::ControllerKind::kPaper;
-  if (name == "tracking") return norma::ControllerKind::kTracking;
-  throw std::invalid_argument("unknown controller (paper | tracking)");
-}
-
-norma::NormaParameters parametersOf(const ros::NodeHandle& nh) {
-  std::string urdf;
-  if (!nh.getParam("robot_description", urdf))
-    throw std::invalid_argument("parameter " + nh.resolveName("robot_description") +
-                                " (urdf/norma.urdf) is required");
-  return config::normaParametersFromUrdf(urdf);
-}
-
-nav_msgs::Path desiredPath(const ros::Time& stamp) {
-  nav_msgs::Path path;
-  path.header.frame_id = kWorldFrame;
-  path.header.stamp = stamp;
-  for (int k = 0; k <= kDesiredPathSamples; ++k) {
-    const norma::PathPoint p = norma::lissajousPath(kPathPeriod * k / kDesiredPathSamples);
-    path.poses.push_back(conversions::toPoseStamped({p.x, p.y, 0.0}, Eigen::Quaterniond::Identity(),
-                                                    kWorldFrame, stamp));
-  }
-  return path;
-}
 
 norma::EffortLimits effortLimits(const ros::NodeHandle& pnh) {
   return {positiveParam(pnh, "max_torque", 20.0), positiveParam(pnh, "max_force", 200.0)};
@@ -60,9 +32,9 @@ norma::EffortLimits effortLimits(const ros::NodeHandle& pnh) {
 }  // namespace
 
 NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
-    : parameters_(parametersOf(nh)),
+    : parameters_(fromRobotDescription(nh, config::normaParametersFromUrdf)),
       loop_(norma::NormaController(parameters_,
-                                   parsedParam(pnh, "controller", "paper", controllerFromString)),
+                                   parsedParam(pnh, "controller", "paper", norma::controllerKindFromString)),
             effortLimits(pnh)),
       publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
       max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
@@ -74,7 +46,8 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   error_pub_ = step_publications_.advertise<spherical_robots::TrackingError>(nh, "tracking_error");
   target_pub_ = step_publications_.advertise<geometry_msgs::PointStamped>(nh, "target");
   desired_path_pub_ = nh.advertise<nav_msgs::Path>("desired_path", 1, true);
-  desired_path_pub_.publish(desiredPath(ros::Time::now()));
+  desired_path_pub_.publish(
+      conversions::lissajousPathMsg(kPathPeriod, kDesiredPathSamples, ros::Time::now()));
   state_sub_ = nh.subscribe("norma_state", kLoopQueueSize, &NormaControllerRos::onState, this);
   actuator_sub_ = nh.subscribe("actuators/state", kLoopQueueSize, &NormaControllerRos::onActuatorState, this);
   updater_.setHardwareID("Norma");
@@ -82,9 +55,7 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   diagnostics_timer_ = startDiagnostics(nh, updater_);
   work_.join(nh, pnh, {state_sub_, actuator_sub_});
   ROS_INFO_STREAM("Norma controller: "
-                  << (controller().kind() == norma::ControllerKind::kPaper
-                          ? "paper (eqs 48-51, Table 1)"
-                          : "tracking")
+                  << norma::toString(controller().kind())
                   << ", path eq 52 from the first state on " << input_.topic());
 }
 
@@ -92,7 +63,7 @@ void NormaControllerRos::onActuatorState(const sensor_msgs::JointState& msg) {
   try {
     const norma::EffortLimits& limits = loop_.limits();
     const std::vector<double> efforts = conversions::effortsByName(
-        msg, kActuators, hardware::kImplausibleFactor * std::max(limits.max_torque, limits.max_force));
+        msg, conversions::normaActuatorNames(), hardware::kImplausibleFactor * std::max(limits.max_torque, limits.max_force));
     loop_.actuatorsApplied(efforts[0], efforts[1]);
     actuator_input_.accept(now());
   } catch (const std::invalid_argument& e) {
@@ -115,23 +86,13 @@ void NormaControllerRos::control(const spherical_robots::NormaState& msg) {
     // the clock first, so a state stamped in the future cannot move the path clock.
     const std::string stamp_problem = stampProblem(now, this->now(), max_stamp_skew_);
     if (!stamp_problem.empty()) throw std::invalid_argument("norma_state " + stamp_problem);
-    norma::NormaMeasurement state;
-    state.q = norma::Vector4(msg.q[0], msg.q[1], msg.q[2], msg.q[3]);
-    state.qd = norma::Vector4(msg.qd[0], msg.qd[1], msg.qd[2], msg.qd[3]);
-    state.x = msg.x;
-    state.y = msg.y;
-    state.psi = msg.psi;
-    output = loop_.step(now.toSec(), state);
+    output = loop_.step(now.toSec(), conversions::normaMeasurementFromMsg(msg));
   } catch (const std::invalid_argument& e) {
     input_.reject(e.what());  // nothing commanded: the hardware keeps the last good efforts
     return;
   }
   input_.accept(this->now());
-  sensor_msgs::JointState command;
-  command.header.stamp = now;
-  command.name = kActuators;
-  command.effort = {output.torque, output.force};
-  command_pub_.publish(command);
+  command_pub_.publish(conversions::normaEffortCommand(output.torque, output.force, now));
   const double age = (this->now() - now).toSec();
   max_state_age_ = std::max(max_state_age_, age);
   if (age > kLateAge) {
@@ -144,28 +105,18 @@ void NormaControllerRos::control(const spherical_robots::NormaState& msg) {
   if (periodDue(last_publish_, now, publish_period_)) {
     last_publish_ = now;
     const norma::PathPoint reference = loop_.reference(now.toSec());
-    spherical_robots::TrackingError error;
-    error.header.stamp = now;
-    error.header.frame_id = kWorldFrame;
-    error.desired = conversions::toPoint({reference.x, reference.y, 0.0});
-    error.desired_velocity = conversions::toVector3({reference.x_dot, reference.y_dot, 0.0});
-    error.error = conversions::toVector3({reference.x - msg.x, reference.y - msg.y, 0.0});
-    error.error_norm = output.error;
-    error.zeta = norma::kinematicLayer(controller().gains().kinematic,
-                                       parameters_.R, msg.x, msg.y, msg.psi,
-                                       reference).zeta;
-    error_pub_.publish(error);
-    geometry_msgs::PointStamped target;
-    target.header = error.header;
-    target.point = error.desired;
-    target_pub_.publish(target);
+    const double zeta = norma::kinematicLayer(controller().gains().kinematic, parameters_.R, msg.x,
+                                              msg.y, msg.psi, reference).zeta;
+    error_pub_.publish(
+        conversions::toNormaTrackingErrorMsg(reference, msg.x, msg.y, output.error, zeta, now));
+    target_pub_.publish(conversions::toPointStamped({reference.x, reference.y, 0.0}, kWorldFrame, now));
   }
 }
 
 void NormaControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   status.summary(diagnostic_msgs::DiagnosticStatus::OK, "controlling");
   const norma::ControlOutput& output = loop_.lastOutput();
-  status.add("controller", controller().kind() == norma::ControllerKind::kPaper ? "paper" : "tracking");
+  status.add("controller", norma::toString(controller().kind()));
   status.add("|e| [m]", output.error);
   status.add("T [N m]", output.torque);
   status.add("F [N]", output.force);

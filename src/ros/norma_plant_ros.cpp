@@ -8,17 +8,12 @@
 #include <stdexcept>
 #include <vector>
 
-#include "spherical_robots/NormaState.h"
 #include "spherical_robots/config/norma_description.hpp"
-#include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/ros/norma_conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 
 namespace spherical_robots {
 namespace {
-
-const std::vector<std::string> kActuators = {"pendulum_motor", "slider_motor"};
-const std::vector<std::string> kJoints = {"tilt_joint", "shell_joint", "pendulum_joint",
-                                          "slider_joint"};
 
 PlantLoop::Defaults loopDefaults() {
   PlantLoop::Defaults defaults;
@@ -32,25 +27,11 @@ PlantLoop::Defaults loopDefaults() {
   return defaults;
 }
 
-norma::LagrangianVariant variantFromString(const std::string& name) {
-  if (name == "text") return norma::LagrangianVariant::kText;
-  if (name == "appendix") return norma::LagrangianVariant::kAppendix;
-  throw std::invalid_argument("unknown variant (text | appendix)");
-}
-
-norma::NormaParameters parametersFromRobotDescription(const ros::NodeHandle& nh) {
-  std::string urdf;
-  if (!nh.getParam("robot_description", urdf))
-    throw std::invalid_argument("parameter " + nh.resolveName("robot_description") +
-                                " (urdf/norma.urdf) is required");
-  return config::normaParametersFromUrdf(urdf);
-}
-
 }  // namespace
 
 NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
-    : dynamics_(parametersFromRobotDescription(nh),
-                parsedParam(pnh, "variant", "text", variantFromString)),
+    : dynamics_(fromRobotDescription(nh, config::normaParametersFromUrdf),
+                parsedParam(pnh, "variant", "text", norma::lagrangianVariantFromString)),
       base_frame_(stringParam(pnh, "frame_prefix", "") + "base_link"),
       max_actuator_effort_(positiveParam(pnh, "max_actuator_effort", 1e4)),
       loop_(nh, pnh, loopDefaults()) {
@@ -69,7 +50,7 @@ NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 
 void NormaPlantRos::read(const sensor_msgs::JointState& actuators) {
   const std::vector<double> efforts =
-      conversions::effortsByName(actuators, kActuators, max_actuator_effort_);
+      conversions::effortsByName(actuators, conversions::normaActuatorNames(), max_actuator_effort_);
   measured_ = {efforts[0], efforts[1]};
 }
 
@@ -80,20 +61,9 @@ void NormaPlantRos::advance(double elapsed, bool actuators_fresh) {
 }
 
 void NormaPlantRos::publishEveryStep(const ros::Time& now, bool actuators_fresh) {
-  spherical_robots::NormaState msg;
-  msg.header.stamp = now;
-  for (int i = 0; i < 4; ++i) {
-    msg.q[i] = state_.q(i);
-    msg.qd[i] = state_.qd(i);
-  }
-  msg.x = state_.x;
-  msg.y = state_.y;
-  msg.psi = state_.psi;
-  const norma::Efforts driving = norma::drivingEfforts(measured_, actuators_fresh);
-  msg.torque = driving.torque;
-  msg.force = driving.force;
-  msg.energy = dynamics_.totalEnergy(state_.q, state_.qd);
-  state_pub_.publish(msg);
+  state_pub_.publish(conversions::toNormaStateMsg(
+      state_, norma::drivingEfforts(measured_, actuators_fresh),
+      dynamics_.totalEnergy(state_.q, state_.qd), now));
 }
 
 void NormaPlantRos::publishPeriodic(const ros::Time& now, bool /*actuators_fresh*/) {
@@ -104,15 +74,7 @@ void NormaPlantRos::publishPeriodic(const ros::Time& now, bool /*actuators_fresh
                                             {0.0, 0.0, rates.psi_dot}, kWorldFrame, base_frame_,
                                             now));
   loop_.tf().sendTransform(conversions::toTransform(centre, heading, kWorldFrame, base_frame_, now));
-  // URDF joints (urdf/norma.urdf): phi, theta, alpha (relative to the shell), delta.
-  const norma::Vector4& q = state_.q;
-  const norma::Vector4& qd = state_.qd;
-  sensor_msgs::JointState joints;
-  joints.header.stamp = now;
-  joints.name = kJoints;
-  joints.position = {q(2), q(0), q(1), q(3)};
-  joints.velocity = {qd(2), qd(0), qd(1), qd(3)};
-  joint_pub_.publish(joints);
+  joint_pub_.publish(conversions::normaJointState(state_, now));
 }
 
 std::optional<PlantModel::Pose> NormaPlantRos::trailPose() const {
@@ -122,7 +84,7 @@ std::optional<PlantModel::Pose> NormaPlantRos::trailPose() const {
 
 void NormaPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   status.summary(diagnostic_msgs::DiagnosticStatus::OK, "rolling");
-  status.add("variant", dynamics_.variant() == norma::LagrangianVariant::kText ? "text" : "appendix");
+  status.add("variant", norma::toString(dynamics_.variant()));
   status.add("X [m]", state_.x);
   status.add("Y [m]", state_.y);
   status.add("psi [rad]", state_.psi);

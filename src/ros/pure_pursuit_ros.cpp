@@ -167,11 +167,7 @@ terrain::DriveRates PurePursuitRos::track(const ros::Time& now) {
       tracker_->command(nanosecondsOf(now), *geometry_, tilt_);
   error_ = tracked.error;
   error_pub_.publish(conversions::toTrackingErrorMsg(error_, tracked.desired, kWorldFrame, now));
-  geometry_msgs::PointStamped target;
-  target.header.stamp = now;
-  target.header.frame_id = kWorldFrame;
-  target.point = conversions::toPoint(tracked.desired.position);
-  target_pub_.publish(target);
+  target_pub_.publish(conversions::toPointStamped(tracked.desired.position, kWorldFrame, now));
   return tracked.rates;
 }
 

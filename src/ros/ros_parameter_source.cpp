@@ -96,15 +96,18 @@ bool boolParam(const ros::NodeHandle& nh, const std::string& name, bool fallback
   return static_cast<bool>(value);
 }
 
-double radiusFromRobotDescription(const ros::NodeHandle& nh) {
-  const std::string name = nh.resolveName("robot_description");
+std::string robotDescription(const ros::NodeHandle& nh) {
   const auto urdf = RosParameterSource(nh).text("robot_description");
-  if (!urdf) throw std::invalid_argument("parameter " + name + " (the URDF) is not set");
-  try {
-    return config::sphereRadiusFromUrdf(*urdf);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument("parameter " + name + ": " + e.what());
-  }
+  if (!urdf)
+    throw std::invalid_argument("parameter " + nh.resolveName("robot_description") +
+                                " (the URDF) is not set");
+  return *urdf;
+}
+
+double radiusFromRobotDescription(const ros::NodeHandle& nh) {
+  return fromRobotDescription(nh, [](const std::string& urdf) {
+    return config::sphereRadiusFromUrdf(urdf);
+  });
 }
 
 }  // namespace spherical_robots

@@ -85,12 +85,8 @@ void RotorPlantRos::publishPeriodic(const ros::Time& now, bool actuators_fresh) 
                                             {radius_ * rates.u_a, radius_ * rates.v_a, 0.0}, omega,
                                             kWorldFrame, base_frame_, now));
   loop_.tf().sendTransform(conversions::toTransform(centre, attitude, kWorldFrame, base_frame_, now));
-  sensor_msgs::JointState joints;
-  joints.header.stamp = now;
-  joints.name = kRotors;
-  joints.position = {positions_[0], positions_[1]};
-  joints.velocity = {speeds.phi1, speeds.phi2};
-  joint_pub_.publish(joints);
+  joint_pub_.publish(conversions::jointState(kRotors, {positions_[0], positions_[1]},
+                                             {speeds.phi1, speeds.phi2}, {}, now));
 }
 
 void RotorPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

@@ -9,7 +9,7 @@
 
 #include "spherical_robots/TerrainState.h"
 #include "spherical_robots/config/terrain_config.hpp"
-#include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/ros/terrain_conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 #include "spherical_robots/terrain/terrain_simulation.hpp"
 

@@ -53,8 +53,7 @@ norma::OdeOptions odeOptionsFrom(const ParsedOptions& options) {
 }
 
 norma::LagrangianVariant variantFrom(const ParsedOptions& options) {
-  return options.text("variant") == "appendix" ? norma::LagrangianVariant::kAppendix
-                                               : norma::LagrangianVariant::kText;
+  return norma::lagrangianVariantFromString(options.text("variant"));
 }
 
 void writeCsv(std::ostream& out, const std::vector<norma::NormaSample>& samples) {
@@ -153,8 +152,7 @@ int runClosedLoop(const ParsedOptions& options, std::ostream& out) {
     requireAbsent(options, kSampledOnly, "is for --loop sampled");
   norma::ClosedLoopConfig config;
   config.variant = variantFrom(options);
-  config.controller = options.text("controller") == "tracking" ? norma::ControllerKind::kTracking
-                                                                : norma::ControllerKind::kPaper;
+  config.controller = norma::controllerKindFromString(options.text("controller"));
   config.duration = options.given("duration") ? options.number("duration") : kClosedLoopDuration;
   config.log_rate = options.given("log-rate") ? options.number("log-rate") : kClosedLoopLogRate;
   std::vector<norma::NormaSample> samples;

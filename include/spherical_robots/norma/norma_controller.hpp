@@ -11,6 +11,7 @@
 // set-point minus measurement.
 
 #include <Eigen/Core>
+#include <string>
 
 #include "spherical_robots/norma/norma_dynamics.hpp"
 
@@ -56,6 +57,10 @@ enum class ControllerKind {
   kPaper,     ///< eqs 48-51 and Table 1, as published
   kTracking,  ///< this project's: feed-forward yaw rate and tilt, see NormaController
 };
+
+/// "paper" | "tracking". @throw std::invalid_argument naming the choices on another name.
+ControllerKind controllerKindFromString(const std::string& name);
+std::string toString(ControllerKind kind);
 
 /// Gains of both controllers.
 struct ControllerGains {

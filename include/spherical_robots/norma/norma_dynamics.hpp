@@ -9,6 +9,7 @@
 // energy ½ I_Sp^z (θ̇ S_φ)² of eq 37 (docs/errata.md, N3). Both are offered.
 
 #include <Eigen/Core>
+#include <string>
 
 namespace spherical_robots::norma {
 
@@ -33,6 +34,10 @@ enum class LagrangianVariant {
   kText,      ///< eq 45 (eqs 7-44): the default
   kAppendix,  ///< A.3-A.21: eq 45 without the sphere's yaw term ½ I_Sp^z (θ̇ S_φ)² in M11
 };
+
+/// "text" | "appendix". @throw std::invalid_argument naming the choices on another name.
+LagrangianVariant lagrangianVariantFromString(const std::string& name);
+std::string toString(LagrangianVariant variant);
 
 using Vector4 = Eigen::Vector4d;
 using Matrix4 = Eigen::Matrix4d;

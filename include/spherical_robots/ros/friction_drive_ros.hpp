@@ -63,7 +63,6 @@ class FrictionDriveSimRos {
  private:
   void onActuatorState(const sensor_msgs::JointState& msg);
   void drive(const sensor_msgs::JointState& msg);
-  void publishMarkers(const roller::DriveState& state, const ros::Time& stamp);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   roller::RollerActuation actuation_;

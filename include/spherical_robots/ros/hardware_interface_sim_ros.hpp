@@ -45,7 +45,6 @@ class HardwareInterfaceSimRos {
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   hardware::SimulatedActuators actuators_;
-  sensor_msgs::JointState state_msg_;
   ros::Publisher state_pub_;
   ros::Subscriber command_sub_;
   ros::Subscriber e_stop_sub_;

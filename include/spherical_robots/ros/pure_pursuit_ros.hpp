@@ -12,7 +12,7 @@
 #include <string>
 
 #include "spherical_robots/TerrainState.h"
-#include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/ros/terrain_conversions.hpp"
 #include "spherical_robots/core/clock_jump.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/terrain/path_tracker.hpp"

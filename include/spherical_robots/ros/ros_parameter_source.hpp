@@ -54,6 +54,22 @@ auto parsedParam(const ros::NodeHandle& nh, const std::string& name, const std::
   }
 }
 
+/// The URDF in parameter `robot_description` of nh. @throw std::invalid_argument if it is not set.
+std::string robotDescription(const ros::NodeHandle& nh);
+
+/// read(the URDF in parameter `robot_description` of nh), read being a config:: reader of URDF
+/// text, its errors prefixed with the parameter's name: how every node reads its robot.
+template <typename Read>
+auto fromRobotDescription(const ros::NodeHandle& nh, Read read) {
+  const std::string urdf = robotDescription(nh);
+  try {
+    return read(urdf);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("parameter " + nh.resolveName("robot_description") + ": " +
+                                e.what());
+  }
+}
+
 /// The sphere radius [m] from the URDF in parameter `robot_description` of nh (the base_link
 /// collision sphere). @throw std::invalid_argument if the parameter is missing or the URDF bad.
 double radiusFromRobotDescription(const ros::NodeHandle& nh);

@@ -1,0 +1,39 @@
+#pragma once
+// The FreeBOT stack's messages: wheel speeds as actuator JointStates, and FreebotState.
+
+#include <sensor_msgs/JointState.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "spherical_robots/FreebotState.h"
+#include "spherical_robots/freebot/freebot_chain.hpp"
+#include "spherical_robots/ros/conversions.hpp"
+
+namespace spherical_robots::conversions {
+
+/// The wheel actuators of a chain of `modules` FreeBOT modules, in order: module1_wheel_right,
+/// module1_wheel_left, module2_wheel_right, … (docs/conventions.md, "FreeBOT stack").
+std::vector<std::string> freebotWheelNames(std::size_t modules);
+
+/// Every module's wheel speeds [rad/s] from the velocities of a JointState (names as
+/// freebotWheelNames, others ignored). @throw std::invalid_argument as velocitiesByName.
+std::vector<freebot::WheelSpeeds> wheelSpeedsFromJointState(const sensor_msgs::JointState& msg,
+                                                            std::size_t modules, double max_rate);
+
+/// A JointState commanding these wheel speeds [rad/s] (names as freebotWheelNames).
+sensor_msgs::JointState jointStateFromWheelSpeeds(const std::vector<freebot::WheelSpeeds>& wheels,
+                                                  const ros::Time& stamp);
+
+/// The chain's state message; `end` is B_n's pose in `frame`.
+spherical_robots::FreebotState toFreebotStateMsg(const freebot::ChainState& state,
+                                                 const freebot::LinkPose& end,
+                                                 const std::string& frame, const ros::Time& stamp);
+
+/// The chain state a FreebotState message describes (quaternions normalised).
+/// @throw std::invalid_argument if the arrays differ in length, a quaternion is not unit within
+/// 1e-6 or a heading is not finite or beyond 1e6 rad.
+freebot::ChainState chainStateFromMsg(const spherical_robots::FreebotState& msg);
+
+}  // namespace spherical_robots::conversions

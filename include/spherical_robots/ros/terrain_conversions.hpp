@@ -1,0 +1,69 @@
+#pragma once
+// The terrain and roller stacks' messages (Moazami et al.): drive rates as actuator JointStates,
+// TerrainState, TrackingError, and the path and surface for rviz.
+
+#include <nav_msgs/Path.h>
+#include <sensor_msgs/JointState.h>
+#include <visualization_msgs/Marker.h>
+
+#include <string>
+
+#include "spherical_robots/TerrainState.h"
+#include "spherical_robots/TrackingError.h"
+#include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/terrain/pure_pursuit.hpp"
+#include "spherical_robots/terrain/reference_path.hpp"
+#include "spherical_robots/terrain/robot_type.hpp"
+#include "spherical_robots/terrain/surface.hpp"
+#include "spherical_robots/terrain/terrain_kinematics.hpp"
+
+namespace spherical_robots::conversions {
+
+/// Drive rates [rad/s] from the velocities of a JointState named by the type's actuators
+/// (terrain::rateNames: 3R theta, phi, psi; 2R theta, phi; RT theta, psi; RS alpha, phi); rates the
+/// type does not actuate are 0, names the type does not have are ignored.
+/// @throw std::invalid_argument as velocitiesByName, naming the robot type.
+terrain::DriveRates ratesFromJointState(terrain::RobotType type, const sensor_msgs::JointState& msg,
+                                        double max_rate);
+
+/// A JointState with the type's actuator names and their rates [rad/s] as velocities (no
+/// positions, no efforts).
+sensor_msgs::JointState jointStateFromRates(terrain::RobotType type, const terrain::DriveRates& rates,
+                                            const ros::Time& stamp);
+
+/// The plant's state message, in frame "world".
+/// @param realised the rates the robot realises (TerrainKinematics::realisedRates).
+spherical_robots::TerrainState toTerrainStateMsg(terrain::RobotType type, terrain::ContactModel model,
+                                                 const terrain::TerrainState& state,
+                                                 const terrain::ContactGeometry& geometry,
+                                                 const terrain::DriveRates& realised,
+                                                 const ros::Time& stamp);
+
+/// The contact geometry a TerrainState message describes: P0, centre, R_L = [h, n x h, n] and the
+/// gradient (f_x, f_y) = -(n_x, n_y) / n_z.
+/// @throw std::invalid_argument if a field is not finite, a coordinate of P0 or the centre exceeds
+/// max_position [m], n or h is not a unit vector, h is not perpendicular to n, or n does not point
+/// up (tolerance 1e-6).
+terrain::ContactGeometry contactGeometryFromMsg(const spherical_robots::TerrainState& msg,
+                                                double max_position);
+
+spherical_robots::TrackingError toTrackingErrorMsg(const terrain::TrackingError& error,
+                                                   const terrain::DesiredPoint& desired,
+                                                   const std::string& frame, const ros::Time& stamp);
+
+// --- Visualisation ------------------------------------------------------------------------------
+
+/// One period of the path lifted onto the surface, `samples` poses (closing the loop).
+/// @throw std::invalid_argument if samples < 2.
+nav_msgs::Path sampledPath(const terrain::ReferencePath& path, const terrain::Surface& surface,
+                           int samples, const std::string& frame, const ros::Time& stamp);
+
+/// The surface over the square [-half_extent, half_extent]^2 [m] as a TRIANGLE_LIST mesh with a
+/// grid spacing of `resolution` [m], coloured by height.
+/// @throw std::invalid_argument on a non-positive or non-finite extent or resolution, or more than
+/// 1000 x 1000 cells.
+visualization_msgs::Marker surfaceMesh(const terrain::Surface& surface, double half_extent,
+                                       double resolution, const std::string& frame,
+                                       const ros::Time& stamp);
+
+}  // namespace spherical_robots::conversions

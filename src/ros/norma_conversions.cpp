@@ -1,0 +1,81 @@
+#include "spherical_robots/ros/norma_conversions.hpp"
+
+#include <Eigen/Geometry>
+
+#include "spherical_robots/norma/norma_simulation.hpp"
+
+namespace spherical_robots::conversions {
+
+const std::vector<std::string>& normaActuatorNames() {
+  static const std::vector<std::string> names = {"pendulum_motor", "slider_motor"};
+  return names;
+}
+
+spherical_robots::NormaState toNormaStateMsg(const norma::NormaState& state,
+                                             const norma::Efforts& driving, double energy,
+                                             const ros::Time& stamp) {
+  spherical_robots::NormaState msg;
+  msg.header.stamp = stamp;
+  for (int i = 0; i < 4; ++i) {
+    msg.q[i] = state.q(i);
+    msg.qd[i] = state.qd(i);
+  }
+  msg.x = state.x;
+  msg.y = state.y;
+  msg.psi = state.psi;
+  msg.torque = driving.torque;
+  msg.force = driving.force;
+  msg.energy = energy;
+  return msg;
+}
+
+norma::NormaMeasurement normaMeasurementFromMsg(const spherical_robots::NormaState& msg) {
+  norma::NormaMeasurement state;
+  state.q = norma::Vector4(msg.q[0], msg.q[1], msg.q[2], msg.q[3]);
+  state.qd = norma::Vector4(msg.qd[0], msg.qd[1], msg.qd[2], msg.qd[3]);
+  state.x = msg.x;
+  state.y = msg.y;
+  state.psi = msg.psi;
+  return state;
+}
+
+sensor_msgs::JointState normaJointState(const norma::NormaState& state, const ros::Time& stamp) {
+  static const std::vector<std::string> joints = {"tilt_joint", "shell_joint", "pendulum_joint",
+                                                  "slider_joint"};
+  // q = (θ, α, φ, δ); the URDF's order is φ, θ, α, δ.
+  const norma::Vector4& q = state.q;
+  const norma::Vector4& qd = state.qd;
+  return jointState(joints, {q(2), q(0), q(1), q(3)}, {qd(2), qd(0), qd(1), qd(3)}, {}, stamp);
+}
+
+sensor_msgs::JointState normaEffortCommand(double torque, double force, const ros::Time& stamp) {
+  return jointState(normaActuatorNames(), {}, {}, {torque, force}, stamp);
+}
+
+spherical_robots::TrackingError toNormaTrackingErrorMsg(const norma::PathPoint& reference, double x,
+                                                        double y, double error_norm, double zeta,
+                                                        const ros::Time& stamp) {
+  spherical_robots::TrackingError msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = kWorldFrame;
+  msg.desired = toPoint({reference.x, reference.y, 0.0});
+  msg.desired_velocity = toVector3({reference.x_dot, reference.y_dot, 0.0});
+  msg.error = toVector3({reference.x - x, reference.y - y, 0.0});
+  msg.error_norm = error_norm;
+  msg.zeta = zeta;
+  return msg;
+}
+
+nav_msgs::Path lissajousPathMsg(double period, int samples, const ros::Time& stamp) {
+  nav_msgs::Path path;
+  path.header.frame_id = kWorldFrame;
+  path.header.stamp = stamp;
+  for (int k = 0; k <= samples; ++k) {
+    const norma::PathPoint p = norma::lissajousPath(period * k / samples);
+    path.poses.push_back(
+        toPoseStamped({p.x, p.y, 0.0}, Eigen::Quaterniond::Identity(), kWorldFrame, stamp));
+  }
+  return path;
+}
+
+}  // namespace spherical_robots::conversions
