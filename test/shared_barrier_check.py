@@ -6,20 +6,27 @@ inside each of its steps. Both run the same scenario, so in one barrier they mus
 same states at the same stamps, value for value, with no step missing in either; on timers the
 follower would see the leader's /clock at the times the machine lets it.
 
+Then the leader's services (docs/lockstep.md, "Services"): paused, time stands still; step_once
+moves it by exactly one step, for both stacks; resumed, it runs on.
+
 Parameters (private): leader, follower (namespaces, e.g. /sphere and /sphere2); duration [s]
 compared from the start (the stacks run on: a plant that ends shuts the launch down, this test
 with it); period [s] (the state's publication period).
 """
 import math
+import time
 import unittest
 
 import rospy
 import rostest
+from rosgraph_msgs.msg import Clock
+from std_srvs.srv import Empty, Trigger
 
 from spherical_robots.msg import TerrainState
 from spherical_robots_testing import Recorder, wait_until
 
 WALL_DEADLINE = 240.0  # [s] for the whole run at the slowest pace a loaded machine gives
+QUIET = 1.0  # [s] of wall time a paused clock must stay still
 
 
 class SharedBarrier(unittest.TestCase):
@@ -67,6 +74,34 @@ class SharedBarrier(unittest.TestCase):
         self.assertEqual(differing, 0, 'the follower is not the same run as the leader: %d states '
                          'differ, contact points by up to %.3g m' % (differing, largest))
 
+    def test_services_pause_step_once_and_resume(self):
+        leader_ns = rospy.get_param('~leader')
+        period = float(rospy.get_param('~period'))
+        clock = Recorder('/clock', Clock)
+        wait_until(lambda: clock.last() is not None, 'a /clock message', WALL_DEADLINE)
+        call = {}
+        for name, kind in (('pause', Empty), ('resume', Empty), ('step_once', Trigger)):
+            rospy.wait_for_service(leader_ns + '/lockstep/' + name, timeout=30.0)
+            call[name] = rospy.ServiceProxy(leader_ns + '/lockstep/' + name, kind)
+        refused = call['step_once']()
+        self.assertFalse(refused.success, 'step_once while running: ' + refused.message)
+
+        call['pause']()
+        time.sleep(QUIET)  # a step in flight when the pause came ends
+        paused_at = clock.last().clock
+        time.sleep(QUIET)
+        self.assertEqual(clock.last().clock, paused_at, 'time moved while paused')
+
+        answer = call['step_once']()
+        self.assertTrue(answer.success, answer.message)
+        wait_until(lambda: clock.last().clock > paused_at, 'the single step', 30.0)
+        time.sleep(QUIET)
+        steps = [m.clock for m in clock.since(0) if m.clock > paused_at]
+        self.assertEqual(len(steps), 1, 'step_once moved time by %d steps' % len(steps))
+
+        call['resume']()
+        wait_until(lambda: (clock.last().clock - steps[0]).to_sec() > 10 * period,
+                   'time running again after resume', 60.0)
 
 if __name__ == '__main__':
     rospy.init_node('shared_barrier_check')

@@ -1,6 +1,6 @@
 #include "spherical_robots/ros/lockstep_clock.hpp"
 
-#include <boost/make_shared.hpp>
+#include <boost/algorithm/string/join.hpp>
 #include <diagnostic_msgs/DiagnosticStatus.h>
 #include <ros/callback_queue.h>
 #include <ros/console.h>
@@ -8,43 +8,18 @@
 #include <ros/this_node.h>
 #include <rosgraph_msgs/Clock.h>
 
-#include <algorithm>
-#include <cmath>
-#include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <utility>
 
 #include "spherical_robots/LockstepStep.h"
 #include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/ros/queued_call.hpp"
 
 namespace spherical_robots {
 namespace {
 
-/// Runs a function from a callback queue: the next step is queued, not called, so that the
-/// acknowledgements, messages and services queued meanwhile are served in between.
-class QueuedCall : public ros::CallbackInterface {
- public:
-  explicit QueuedCall(std::function<void()> call) : call_(std::move(call)) {}
-  CallResult call() override {
-    call_();
-    return Success;
-  }
-
- private:
-  std::function<void()> call_;
-};
-
-ros::Time fromNanoseconds(std::int64_t ns) {
-  ros::Time t;
-  t.fromNSec(static_cast<std::uint64_t>(ns));
-  return t;
-}
-
 std::string joined(const std::vector<std::string>& names) {
-  std::string text;
-  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
-  return text.empty() ? "none" : text;
+  return names.empty() ? "none" : boost::algorithm::join(names, ", ");
 }
 
 }  // namespace
@@ -52,15 +27,8 @@ std::string joined(const std::vector<std::string>& names) {
 LockstepClock::LockstepClock(ros::NodeHandle nh, Settings settings, Tick tick, Ready ready)
     : settings_(std::move(settings)), tick_(std::move(tick)), ready_(std::move(ready)),
       sequencer_(ros::this_node::getName(), settings_.participants, settings_.timeout),
-      inputs_(settings_.subscriptions), queue_(nh.getCallbackQueue()),
+      inputs_(settings_.subscriptions), pace_(settings_.step, settings_.speedup), queue_(nh.getCallbackQueue()),
       created_wall_(ros::WallTime::now()) {
-  if (!(settings_.step > 0.0) || !std::isfinite(settings_.step) ||
-      !(settings_.speedup >= 0.0) || !std::isfinite(settings_.speedup)) {
-    std::ostringstream what;
-    what << "lock-step clock: step = " << settings_.step << " s must be > 0, speedup = "
-         << settings_.speedup << " finite and >= 0";
-    throw std::invalid_argument(what.str());
-  }
   if (!ros::Time::isSimTime())
     throw std::invalid_argument("lock-step clock publishes /clock, but /use_sim_time is not true, "
                                 "so no node would follow it");
@@ -79,12 +47,8 @@ LockstepClock::LockstepClock(ros::NodeHandle nh, Settings settings, Tick tick, R
   poll_timer_ = nh.createWallTimer(ros::WallDuration(0.05), &LockstepClock::poll, this);
   pace_timer_ = nh.createWallTimer(
       ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) { runStep(); }, true, false);
-  ROS_INFO_STREAM("Lock-step " << (settings_.leader.empty() ? "/clock" : "time of " + settings_.leader)
-                  << ": " << settings_.step << " s per step, "
-                  << (!settings_.leader.empty() ? std::string("as its leader asks")
-                      : settings_.speedup > 0.0 ? "at most " + std::to_string(settings_.speedup) +
-                                                      "x real time"
-                                                : std::string("as fast as the participants answer"))
+  ROS_INFO_STREAM("Lock-step " << (settings_.leader.empty() ? "/clock: " + pace_.describe()
+                                                          : "time of " + settings_.leader + ", as it asks")
                   << "; participants " << joined(settings_.participants) << ", dropped after "
                   << settings_.timeout << " s of silence");
 }
@@ -157,19 +121,18 @@ void LockstepClock::poll(const ros::WallTimerEvent&) {
 
 void LockstepClock::schedule() {
   if (finished_ || scheduled_ || sequencer_.stepInProgress()) return;
-  if (paused_ && single_steps_ == 0) return;
-  if (single_steps_ > 0) --single_steps_;
+  const auto delay = pace_.delayBefore(nanosecondsOf(now_ + ros::Duration(settings_.step)),
+                                       ros::WallTime::now().toSec());
+  if (!delay) return;
   scheduled_ = true;
-  if (settings_.speedup > 0.0 && !first_step_.isZero()) {
-    const double due = (now_ + ros::Duration(settings_.step) - first_step_).toSec() / settings_.speedup;
-    const double ahead = due - (ros::WallTime::now() - first_step_wall_).toSec();
-    if (ahead > 0.0) {
-      pace_timer_.setPeriod(ros::WallDuration(ahead));
-      pace_timer_.start();
-      return;
-    }
+  if (*delay > 0.0) {
+    pace_timer_.setPeriod(ros::WallDuration(*delay));
+    pace_timer_.start();
+    return;
   }
-  queue_->addCallback(boost::make_shared<QueuedCall>([this] { runStep(); }));
+  // Queued, not called, so that the acknowledgements, messages and services queued meanwhile are
+  // served in between.
+  queue_->addCallback(queuedCall([this] { runStep(); }));
 }
 
 void LockstepClock::runStep() {
@@ -180,10 +143,7 @@ void LockstepClock::runStep() {
 
 void LockstepClock::runStepAt(const ros::Time& t) {
   now_ = t;
-  if (first_step_.isZero()) {
-    first_step_ = now_;
-    first_step_wall_ = ros::WallTime::now();
-  }
+  pace_.started(nanosecondsOf(now_), ros::WallTime::now().toSec());
   if (settings_.leader.empty()) {
     rosgraph_msgs::Clock clock;
     clock.clock = now_;
@@ -204,11 +164,11 @@ void LockstepClock::pump() {
       return;
     }
     spherical_robots::LockstepStep step;
-    step.stamp = fromNanoseconds(request->stamp);
+    step.stamp = timeOf(request->stamp);
     step.participant = request->participant;
     for (const PublishedTopic& input : request->inputs) {
       step.inputs.push_back(input.topic);
-      step.input_stamps.push_back(fromNanoseconds(input.stamp));
+      step.input_stamps.push_back(timeOf(input.stamp));
     }
     request_pub_.publish(step);
     return;
@@ -235,30 +195,23 @@ void LockstepClock::endStep() {
 }
 
 bool LockstepClock::pause(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
-  paused_ = true;
-  single_steps_ = 0;
+  pace_.pause();
   ROS_INFO_STREAM("lock-step: paused at " << now_ << " s");
   return true;
 }
 
 bool LockstepClock::resume(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
-  paused_ = false;
+  pace_.resume();
   ROS_INFO_STREAM("lock-step: resumed at " << now_ << " s");
   if (started_) schedule();
   return true;
 }
 
 bool LockstepClock::stepOnce(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
-  response.success = paused_ && started_;
-  if (!response.success) {
-    response.message = started_ ? "not paused: call lockstep/pause first" : "time has not started";
-    return true;
-  }
-  ++single_steps_;
-  schedule();
-  std::ostringstream message;
-  message << "one step of " << settings_.step << " s after " << now_ << " s";
-  response.message = message.str();
+  const std::string refusal = started_ ? pace_.stepOnce() : "time has not started";
+  response.success = refusal.empty();
+  response.message = response.success ? "one step after " + std::to_string(now_.toSec()) + " s" : refusal;
+  if (response.success) schedule();
   return true;
 }
 
@@ -270,9 +223,7 @@ void LockstepClock::finish() {
 }
 
 double LockstepClock::realTimeFactor() const {
-  const double wall = (ros::WallTime::now() - first_step_wall_).toSec();
-  if (first_step_.isZero() || !(wall > 0.0)) return std::numeric_limits<double>::quiet_NaN();
-  return (now_ - first_step_).toSec() / wall;
+  return pace_.realTimeFactor(nanosecondsOf(now_), ros::WallTime::now().toSec());
 }
 
 void LockstepClock::report(diagnostic_updater::DiagnosticStatusWrapper& status) {
@@ -283,7 +234,7 @@ void LockstepClock::report(diagnostic_updater::DiagnosticStatusWrapper& status) 
     (participant.joined ? members : absent).push_back(participant.name);
   status.add("lock-step participants", joined(members));
   status.add("lock-step participants absent", joined(absent));
-  status.add("lock-step paused", paused_);
+  status.add("lock-step paused", pace_.paused());
   status.add("forged acknowledgements", forged_);
   status.add("unexpected acknowledgements", unexpected_);
   if (const std::string* awaited = sequencer_.awaited()) status.add("awaiting", *awaited);

@@ -33,6 +33,13 @@ inline const std::string kWorldFrame = "world";
 /// A ROS time as the core's whole nanoseconds (core/stamp.hpp), which its decisions take.
 inline Nanoseconds nanosecondsOf(const ros::Time& t) { return static_cast<Nanoseconds>(t.toNSec()); }
 
+/// The core's whole nanoseconds as a ROS time.
+inline ros::Time timeOf(Nanoseconds ns) {
+  ros::Time t;
+  t.fromNSec(static_cast<std::uint64_t>(ns));
+  return t;
+}
+
 }  // namespace spherical_robots
 
 namespace spherical_robots::conversions {

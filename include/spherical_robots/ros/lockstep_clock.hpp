@@ -24,6 +24,7 @@
 
 #include "spherical_robots/LockstepAck.h"
 #include "spherical_robots/core/lockstep_inputs.hpp"
+#include "spherical_robots/core/lockstep_pace.hpp"
 #include "spherical_robots/core/lockstep_sequencer.hpp"
 #include "spherical_robots/ros/lockstep_participant.hpp"
 #include "spherical_robots/ros/plant_clock.hpp"
@@ -82,17 +83,14 @@ class LockstepClock : public PlantClock {
   Ready ready_;
   LockstepSequencer sequencer_;
   LockstepInputs inputs_;
+  LockstepPace pace_;
   ros::CallbackQueueInterface* queue_;
   bool started_ = false;
   bool scheduled_ = false;
   bool awaiting_inputs_ = false;
-  bool paused_ = false;
   bool finished_ = false;
-  int single_steps_ = 0;
   ros::Time now_;
-  ros::Time first_step_;
   ros::WallTime created_wall_;
-  ros::WallTime first_step_wall_;
   ros::WallTime inputs_since_;
   unsigned long forged_ = 0;
   unsigned long unexpected_ = 0;

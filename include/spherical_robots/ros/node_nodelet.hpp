@@ -3,7 +3,6 @@
 // runs (run_node.hpp), constructed inside a nodelet manager instead of a process of its own, so
 // that messages between the nodes of a stack pass as shared pointers within one process.
 
-#include <boost/make_shared.hpp>
 #include <nodelet/nodelet.h>
 #include <ros/callback_queue.h>
 
@@ -16,6 +15,8 @@
 #include <optional>
 #include <thread>
 #include <utility>
+
+#include "spherical_robots/ros/queued_call.hpp"
 
 namespace spherical_robots {
 
@@ -47,22 +48,13 @@ class NodeletThread {
   /// Runs `work` on the thread, after the callbacks queued before it, and waits for it.
   /// @throw what `work` throws. Not from the thread itself.
   void run(std::function<void()> work) {
-    const auto task = boost::make_shared<Task>(std::move(work));
-    std::future<void> done = task->task.get_future();
-    queue_.addCallback(task);
+    std::packaged_task<void()> task(std::move(work));
+    std::future<void> done = task.get_future();
+    queue_.addCallback(queuedCall(std::move(task)));
     done.get();
   }
 
  private:
-  struct Task : ros::CallbackInterface {
-    explicit Task(std::function<void()> work) : task(std::move(work)) {}
-    CallResult call() override {
-      task();
-      return Success;
-    }
-    std::packaged_task<void()> task;
-  };
-
   // Not stopped by ros::shutdown(), so that the nodes are still destroyed on it afterwards.
   NodeletThread()
       : thread_([this] {

@@ -1,0 +1,66 @@
+#include "spherical_robots/core/lockstep_pace.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace spherical_robots {
+
+LockstepPace::LockstepPace(double step, double speedup) : step_(step), speedup_(speedup) {
+  std::ostringstream what;
+  if (!(step > 0.0) || !std::isfinite(step))
+    what << "lock-step pace: step = " << step << " s must be finite and > 0";
+  else if (!(speedup >= 0.0) || !std::isfinite(speedup))
+    what << "lock-step pace: speedup = " << speedup << " must be finite and >= 0 (0: no cap)";
+  if (!what.str().empty()) throw std::invalid_argument(what.str());
+}
+
+std::string LockstepPace::describe() const {
+  std::ostringstream text;
+  text << step_ << " s per step, ";
+  if (speedup_ > 0.0)
+    text << "at most " << speedup_ << "x real time";
+  else
+    text << "as fast as the participants answer";
+  return text.str();
+}
+
+std::optional<double> LockstepPace::delayBefore(std::int64_t step, double wall) {
+  if (paused_) {
+    if (single_steps_ == 0) return std::nullopt;
+    --single_steps_;
+  }
+  if (speedup_ == 0.0 || !first_step_) return 0.0;
+  // The step at t is due t - t0 of simulated time after the first, divided by the cap.
+  const double due = 1e-9 * static_cast<double>(step - *first_step_) / speedup_;
+  const double ahead = due - (wall - first_wall_);
+  return ahead > 0.0 ? ahead : 0.0;
+}
+
+void LockstepPace::started(std::int64_t step, double wall) {
+  if (first_step_) return;
+  first_step_ = step;
+  first_wall_ = wall;
+}
+
+void LockstepPace::pause() {
+  paused_ = true;
+  single_steps_ = 0;
+}
+
+void LockstepPace::resume() { paused_ = false; }
+
+std::string LockstepPace::stepOnce() {
+  if (!paused_) return "not paused: call lockstep/pause first";
+  ++single_steps_;
+  return "";
+}
+
+double LockstepPace::realTimeFactor(std::int64_t latest_step, double wall) const {
+  const double elapsed_wall = wall - first_wall_;
+  if (!first_step_ || !(elapsed_wall > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  return 1e-9 * static_cast<double>(latest_step - *first_step_) / elapsed_wall;
+}
+
+}  // namespace spherical_robots
