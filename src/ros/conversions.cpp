@@ -410,4 +410,33 @@ freebot::ChainState chainStateFromMsg(const spherical_robots::FreebotState& msg)
   return state;
 }
 
+spherical_robots::FreebotGoalResult toGoalResultMsg(const freebot::GoalVerdict& verdict,
+                                                    const geometry_msgs::Pose& goal,
+                                                    const std::string& frame,
+                                                    const ros::Time& stamp) {
+  using Result = spherical_robots::FreebotGoalResult;
+  using freebot::GoalStatus;
+  static_assert(static_cast<int>(GoalStatus::Moving) == Result::MOVING &&
+                    static_cast<int>(GoalStatus::Arrived) == Result::ARRIVED &&
+                    static_cast<int>(GoalStatus::Unreachable) == Result::UNREACHABLE &&
+                    static_cast<int>(GoalStatus::Rejected) == Result::REJECTED &&
+                    static_cast<int>(GoalStatus::Preempted) == Result::PREEMPTED &&
+                    static_cast<int>(GoalStatus::Aborted) == Result::ABORTED,
+                "freebot::GoalStatus must list msg/FreebotGoalResult.msg's statuses in order");
+  Result result;
+  result.header.stamp = stamp;
+  result.header.frame_id = frame;
+  result.status = static_cast<std::uint8_t>(verdict.status);
+  const Eigen::Vector4d orientation(goal.orientation.x, goal.orientation.y, goal.orientation.z,
+                                    goal.orientation.w);
+  if (Eigen::Vector3d(goal.position.x, goal.position.y, goal.position.z).allFinite() &&
+      orientation.allFinite())
+    result.goal = goal;
+  result.position_error = verdict.position_error;
+  result.orientation_error = verdict.orientation_error;
+  result.elapsed = verdict.elapsed;
+  result.message = verdict.message;
+  return result;
+}
+
 }  // namespace spherical_robots::conversions

@@ -20,11 +20,13 @@
 #include <string>
 #include <vector>
 
+#include "spherical_robots/FreebotGoalResult.h"
 #include "spherical_robots/FreebotState.h"
 #include "spherical_robots/TerrainState.h"
 #include "spherical_robots/TrackingError.h"
 #include "spherical_robots/core/stamp.hpp"
 #include "spherical_robots/freebot/freebot_chain.hpp"
+#include "spherical_robots/freebot/goal_executive.hpp"
 #include "spherical_robots/terrain/teleop.hpp"
 #include "spherical_robots/terrain/pure_pursuit.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
@@ -184,5 +186,12 @@ spherical_robots::FreebotState toFreebotStateMsg(const freebot::ChainState& stat
 /// @throw std::invalid_argument if the arrays differ in length, a quaternion is not unit within
 /// 1e-6 or a heading is not finite or beyond 1e6 rad.
 freebot::ChainState chainStateFromMsg(const spherical_robots::FreebotState& msg);
+
+/// The verdict on a goal whose pose was `goal` (not echoed unless finite: a rejected goal may
+/// hold NaN or 1e300), in `frame`.
+spherical_robots::FreebotGoalResult toGoalResultMsg(const freebot::GoalVerdict& verdict,
+                                                    const geometry_msgs::Pose& goal,
+                                                    const std::string& frame,
+                                                    const ros::Time& stamp);
 
 }  // namespace spherical_robots::conversions
