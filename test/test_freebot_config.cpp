@@ -4,21 +4,19 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdio>
-#include <fstream>
 #include <string>
+#include <tuple>
 #include <vector>
-#include <unistd.h>
 
 #include "spherical_robots/config/freebot_config.hpp"
 #include "spherical_robots/config/yaml_parameter_source.hpp"
 #include "expect_invalid_argument.hpp"
-
-#ifndef SPHERICAL_ROBOTS_SOURCE_DIR
-#error "SPHERICAL_ROBOTS_SOURCE_DIR must be defined (CMakeLists.txt)"
-#endif
+#include "temp_yaml.hpp"
 
 namespace {
+
+// CMakeLists.txt defines SPHERICAL_ROBOTS_SOURCE_DIR: the shipped file of the source tree.
+const std::string kShipped = SPHERICAL_ROBOTS_SOURCE_DIR "/config/freebot.yaml";
 
 using spherical_robots::config::freebotChain;
 using spherical_robots::config::freebotGoalExecutive;
@@ -27,45 +25,21 @@ using spherical_robots::freebot::FreebotChain;
 using spherical_robots::freebot::GoalExecutiveParameters;
 using spherical_robots::freebot::TrolleyGeometry;
 
-const std::string kShipped = SPHERICAL_ROBOTS_SOURCE_DIR "/config/freebot.yaml";
+using spherical_robots::test_support::TempYaml;
 
-// A YAML file in the test's temp directory, removed when the test ends.
-class TempYaml {
- public:
-  explicit TempYaml(const std::string& text) {
-    static int counter = 0;
-    path_ = ::testing::TempDir() + "freebot_config_" + std::to_string(::getpid()) + "_" +
-            std::to_string(counter++) + ".yaml";
-    std::ofstream(path_) << text;
-  }
-  ~TempYaml() { std::remove(path_.c_str()); }
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
+/// Every number of the parameters, for comparison as a whole.
+auto everyField(const GoalExecutiveParameters& p) {
+  return std::make_tuple(
+      p.ik.position_tolerance, p.ik.orientation_tolerance, p.ik.restarts, p.ik.max_iterations,
+      p.gains.forward, p.gains.steering, p.gains.alignment, p.limits.max_forward_speed,
+      p.limits.max_steering_speed, p.limits.max_wheel_speed, p.limits.heading_tolerance,
+      p.limits.contact_tolerance, p.limits.steering_distance, p.position_tolerance,
+      p.orientation_tolerance, p.max_replans, p.timeout);
+}
 
 TEST(FreebotConfig, ShippedFileEqualsTheDefaultsToTheBit) {
   const YamlParameterSource source(kShipped);
-  const GoalExecutiveParameters read = freebotGoalExecutive(source);
-  const GoalExecutiveParameters defaults;
-  EXPECT_EQ(read.ik.position_tolerance, defaults.ik.position_tolerance);
-  EXPECT_EQ(read.ik.orientation_tolerance, defaults.ik.orientation_tolerance);
-  EXPECT_EQ(read.ik.restarts, defaults.ik.restarts);
-  EXPECT_EQ(read.ik.max_iterations, defaults.ik.max_iterations);
-  EXPECT_EQ(read.gains.forward, defaults.gains.forward);
-  EXPECT_EQ(read.gains.steering, defaults.gains.steering);
-  EXPECT_EQ(read.gains.alignment, defaults.gains.alignment);
-  EXPECT_EQ(read.limits.max_forward_speed, defaults.limits.max_forward_speed);
-  EXPECT_EQ(read.limits.max_steering_speed, defaults.limits.max_steering_speed);
-  EXPECT_EQ(read.limits.max_wheel_speed, defaults.limits.max_wheel_speed);
-  EXPECT_EQ(read.limits.heading_tolerance, defaults.limits.heading_tolerance);
-  EXPECT_EQ(read.limits.contact_tolerance, defaults.limits.contact_tolerance);
-  EXPECT_EQ(read.limits.steering_distance, defaults.limits.steering_distance);
-  EXPECT_EQ(read.position_tolerance, defaults.position_tolerance);
-  EXPECT_EQ(read.orientation_tolerance, defaults.orientation_tolerance);
-  EXPECT_EQ(read.max_replans, defaults.max_replans);
-  EXPECT_EQ(read.timeout, defaults.timeout);
+  EXPECT_EQ(everyField(freebotGoalExecutive(source)), everyField(GoalExecutiveParameters{}));
 
   const FreebotChain chain = freebotChain(source);
   const TrolleyGeometry geometry;
@@ -106,7 +80,8 @@ TEST(FreebotConfig, BadValuesNameTheKeyTheValueAndTheFile) {
     std::string yaml;
     std::vector<std::string> needles;
   } cases[] = {
-      {"freebot: {goal: {position_tolerance: -1.0e-4}}", {"freebot/goal/position_tolerance", "-0.0001", "> 0"}},
+      {"freebot: {goal: {position_tolerance: -1.0e-4}}",
+       {"freebot/goal/position_tolerance", "-0.0001", "> 0"}},
       {"freebot: {goal: {max_replans: 1.5}}", {"freebot/goal/max_replans", "1.5", "integer >= 0"}},
       {"freebot: {ik: {max_iterations: 0}}", {"freebot/ik/max_iterations", "integer >= 1"}},
       {"freebot: {drive: {max_wheel_speed: .nan}}", {"freebot/drive/max_wheel_speed", "finite"}},
