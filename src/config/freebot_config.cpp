@@ -53,7 +53,8 @@ freebot::GoalExecutiveParameters freebotGoalExecutive(const ParameterSource& sou
   p.ik.restarts = wholeNumber(source, kRoot + "ik/restarts", p.ik.restarts, 0);
   p.ik.max_iterations = wholeNumber(source, kRoot + "ik/max_iterations", p.ik.max_iterations, 1);
   readPositive(source, kRoot + "gains/", p.gains,
-               {{"forward", &K::forward}, {"steering", &K::steering}, {"alignment", &K::alignment}});
+               {{"forward", &K::forward}, {"steering", &K::steering},
+                {"alignment", &K::alignment}});
   readPositive(source, kRoot + "drive/", p.limits,
                {{"max_forward_speed", &D::max_forward_speed},
                 {"max_steering_speed", &D::max_steering_speed},

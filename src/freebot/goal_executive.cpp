@@ -84,7 +84,8 @@ ExecutiveStep GoalExecutive::step(Nanoseconds t, const ChainState& measurement) 
                                     t));
     }
   } else if (secondsSince(goal_->accepted, t) > parameters_.timeout) {
-    out.verdicts.push_back(finish(GoalStatus::Aborted, "goal timeout: holding the pose reached", t));
+    out.verdicts.push_back(
+        finish(GoalStatus::Aborted, "goal timeout: holding the pose reached", t));
   } else {
     for (std::size_t i = 0; i < drives_.size(); ++i) out.wheels[i] = drives_[i].wheels;
   }

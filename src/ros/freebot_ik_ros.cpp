@@ -179,12 +179,14 @@ void FreebotIkRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status)
   else if (failed)
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, last_verdict_->message);
   else
-    status.summary(diagnostic_msgs::DiagnosticStatus::OK, last_verdict_ ? last : "waiting for a goal");
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK,
+                   last_verdict_ ? last : "waiting for a goal");
   status.add("goals", goals_);
   status.add("unreachable goals", unreachable_);
   status.add("rejected goals", goal_input_.rejected());
   status.add("last verdict", last);
-  status.add("last verdict, position error [m]", last_verdict_ ? last_verdict_->position_error : NAN);
+  status.add("last verdict, position error [m]",
+             last_verdict_ ? last_verdict_->position_error : NAN);
   status.add("last verdict, orientation error [rad]",
              last_verdict_ ? last_verdict_->orientation_error : NAN);
   const std::vector<freebot::ModuleDrive>& drives = executive_.drives();

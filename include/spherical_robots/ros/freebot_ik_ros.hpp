@@ -23,9 +23,9 @@ namespace spherical_robots {
 struct FreebotIkParameters {
   freebot::FreebotChain chain;                 ///< freebot/radii, freebot/trolley/*
   freebot::GoalExecutiveParameters executive;  ///< freebot/{ik,gains,drive,goal}/*
-  double input_timeout = 0.1;       ///< [s] of freebot_state
-  double max_stamp_skew = 1.0;      ///< [s] a freebot_state stamped further from the clock: rejected
-  double max_goal_distance = 100.0; ///< [m] a goal coordinate beyond it: REJECTED, not planned
+  double input_timeout = 0.1;        ///< [s] of freebot_state
+  double max_stamp_skew = 1.0;       ///< [s] a freebot_state stamped further off the clock: rejected
+  double max_goal_distance = 100.0;  ///< [m] a goal coordinate beyond it: REJECTED, not planned
 };
 
 /// stack: the stack's namespace (config/freebot.yaml); node: the private one.
