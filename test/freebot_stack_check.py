@@ -54,7 +54,7 @@ class FreebotStackCheck(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.prefix = rospy.get_param('~frame_prefix', rospy.get_namespace().strip('/') + '/')
-        cls.radii = [float(r) for r in rospy.get_param('radii')]
+        cls.radii = [float(r) for r in rospy.get_param('freebot/radii')]
         cls.modules = len(cls.radii) - 1
         cls.end_frame = cls.prefix + 'link%d' % cls.modules
         cls.reachable = [float(v) for v in rospy.get_param('~reachable')]

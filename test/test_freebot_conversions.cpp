@@ -1,6 +1,7 @@
 // The FreeBOT stack's messages <-> core types (src/ros/freebot_conversions.cpp), without a master.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <limits>
 #include <stdexcept>
 
@@ -56,6 +57,45 @@ TEST(FreebotConversion, ChainStateRoundTripAndRejections) {
   msg.heading.back() = 0.0;
   msg.link[1].w = 2.0;  // not unit
   EXPECT_THROW(sr::conversions::chainStateFromMsg(msg), std::invalid_argument);
+}
+
+// The chain's transforms composed from the world give each sphere's pose by the manipulator's
+// forward kinematics (B_n: the end effector); each trolley arrow sits on its sphere's surface.
+TEST(FreebotConversion, ChainTransformsComposeToTheForwardKinematics) {
+  const sr::freebot::SrcManipulator manipulator({0.05, 0.04, 0.03});
+  sr::freebot::ChainState state;
+  const Eigen::Quaterniond a(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 1, 0).normalized()));
+  const Eigen::Quaterniond b(Eigen::AngleAxisd(-0.7, Eigen::Vector3d(0, 1, 2).normalized()));
+  state.joints = {{a, b}, {b, a.conjugate()}};
+  state.headings = {0.3, -1.2};
+  const auto transforms = sr::conversions::freebotChainTransforms(manipulator, state, "fb/",
+                                                                   ros::Time(1.0));
+  ASSERT_EQ(transforms.size(), 3u);
+  EXPECT_EQ(transforms[0].header.frame_id, sr::kWorldFrame);
+  Eigen::Isometry3d world_from_link = Eigen::Isometry3d::Identity();
+  const std::vector<sr::freebot::LinkPose> links = manipulator.forwardKinematics(state.joints);
+  for (std::size_t i = 0; i < transforms.size(); ++i) {
+    const auto& t = transforms[i].transform;
+    EXPECT_EQ(transforms[i].child_frame_id, sr::conversions::freebotLinkFrame("fb/", i));
+    world_from_link = world_from_link * Eigen::Translation3d(t.translation.x, t.translation.y,
+                                                             t.translation.z) *
+                      Eigen::Quaterniond(t.rotation.w, t.rotation.x, t.rotation.y, t.rotation.z);
+    if (i == 0) continue;
+    EXPECT_LT((world_from_link.translation() - links[i - 1].position).norm(), 1e-12) << i;
+  }
+  const sr::freebot::LinkPose end = manipulator.endEffector(state.joints);
+  EXPECT_LT((world_from_link.translation() - end.position).norm(), 1e-12);
+  EXPECT_LT(Eigen::Quaterniond(world_from_link.rotation()).angularDistance(end.orientation), 1e-12);
+
+  const auto markers = sr::conversions::freebotChainMarkers(manipulator, state, "fb/", ros::Time(1.0));
+  ASSERT_EQ(markers.markers.size(), 5u);  // three spheres, two trolleys
+  for (const auto& m : markers.markers) {
+    if (m.ns != "trolleys") continue;
+    const std::size_t i = static_cast<std::size_t>(m.id);
+    EXPECT_EQ(m.header.frame_id, sr::conversions::freebotLinkFrame("fb/", i - 1));
+    const Eigen::Vector3d p(m.pose.position.x, m.pose.position.y, m.pose.position.z);
+    EXPECT_NEAR(p.norm(), manipulator.radii()[i - 1], 1e-12);
+  }
 }
 
 int main(int argc, char** argv) {

@@ -1,7 +1,8 @@
 // `sphere_sim freebot-fk`, `freebot-ik` and `freebot-wheels`, run as the built executable, against
 // independent truth: the closed form of straight rolls and finite differences of rolling for
 // the forward kinematics and J_{B_n}, a round trip IK → FK through the files, targets out of
-// reach, the appendix-C wheel geometry, and the exit statuses 2, 3 and 4 of DESIGN.md.
+// reach, the appendix-C wheel geometry, the defaults from config/freebot.yaml (the stack's file),
+// and the exit statuses 2, 3 and 4 of DESIGN.md.
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -280,6 +283,40 @@ TEST_F(FreebotCliTest, WheelSpeedsOfTableIIGeometry) {
   EXPECT_NEAR(json().get<double>("u_s"), -0.5, 1e-14);
 }
 
+TEST_F(FreebotCliTest, ChainSolverAndTrolleyDefaultToTheStacksConfiguration) {
+  // Without --config: the shipped config/freebot.yaml, the stack's four Table II modules and the
+  // solver's documented defaults, to the last digit of the output.
+  const auto output = [&](const std::vector<std::string>& args) {
+    EXPECT_EQ(run(args).status, 0) << args.front();
+    std::ifstream file(dir_ / "out.json");
+    return std::string(std::istreambuf_iterator<char>(file), {});
+  };
+  const std::string target = "0.05,0.12,0.15";  // freebot_stack.test's position-only goal
+  EXPECT_EQ(output({"freebot-ik", "--target", target}),
+            output({"freebot-ik", "--target", target, "--radii", "0.034,0.034,0.034,0.034,0.034",
+                    "--position-tolerance", "1e-5", "--orientation-tolerance", "1e-4",
+                    "--restarts", "60"}));
+  EXPECT_EQ(output({"freebot-wheels", "--trolley", "0.01,-0.5"}),
+            output({"freebot-wheels", "--trolley", "0.01,-0.5", "--wheel-radius", "0.005",
+                    "--wheel-interval", "0.046", "--shell-radii", "0.032,0.034"}));
+  // --config DIR: DIR/config/freebot.yaml.
+  fs::create_directories(dir_ / "share" / "config");
+  std::ofstream(dir_ / "share" / "config" / "freebot.yaml")
+      << "freebot:\n  radii: [" << kRadiiText << "]\n  ik: {position_tolerance: 2.0e-5}\n";
+  const std::string share = (dir_ / "share").string();
+  EXPECT_EQ(output({"freebot-fk", "--config", share, "--joints", kJointsText}),
+            output({"freebot-fk", "--radii", kRadiiText, "--joints", kJointsText}));
+  EXPECT_EQ(output({"freebot-ik", "--config", share, "--target", "0.02,0.03,0.06"}),
+            output({"freebot-ik", "--radii", kRadiiText, "--target", "0.02,0.03,0.06",
+                    "--position-tolerance", "2e-5"}));
+  std::ofstream(dir_ / "share" / "config" / "freebot.yaml")
+      << "freebot: {radii: [0.034, 0.034], ik: {restarts: -1}}\n";
+  expectRejected({"freebot-ik", "--config", share, "--target", "0,0,0.1"}, 4,
+                 "freebot/ik/restarts");
+  expectRejected({"freebot-fk", "--config", (dir_ / "nowhere").string(), "--joints", "0,0"}, 4,
+                 "freebot.yaml");
+}
+
 TEST_F(FreebotCliTest, UsageErrorsExitTwo) {
   expectRejected({"freebot-fk", "--radii", kRadiiText, "--joints", "0.1,0.2;0.3"}, 2, "--joints");
   expectRejected({"freebot-fk", "--radii", kRadiiText, "--joints", "0.1,0.2;0.3,x"}, 2, "--joints");
@@ -327,12 +364,13 @@ TEST_F(FreebotCliTest, InvalidInputExitsFourWithoutOutput) {
 
 TEST_F(FreebotCliTest, HelpNamesEveryOption) {
   const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
-      {"freebot-fk", {"--radii", "--joints", "--joint-quaternions", "--out"}},
+      {"freebot-fk", {"--radii", "--joints", "--joint-quaternions", "--config", "--out"}},
       {"freebot-ik",
        {"--radii", "--target", "--position-only", "--seed", "--position-tolerance",
-        "--orientation-tolerance", "--restarts", "--random-seed", "--out"}},
+        "--orientation-tolerance", "--restarts", "--random-seed", "--config", "--out"}},
       {"freebot-wheels",
-       {"--wheel-radius", "--wheel-interval", "--shell-radii", "--trolley", "--wheels", "--out"}}};
+       {"--wheel-radius", "--wheel-interval", "--shell-radii", "--trolley", "--wheels", "--config",
+        "--out"}}};
   for (const auto& [name, options] : commands) {
     const Process help = sphere_sim_test::runIn(SPHERE_SIM_EXECUTABLE, {name, "--help"}, dir_);
     EXPECT_EQ(help.status, 0);

@@ -20,6 +20,7 @@
 #include "spherical_robots/config/terrain_config.hpp"
 #include "spherical_robots/config/yaml_parameter_source.hpp"
 #include "expect_invalid_argument.hpp"
+#include "temp_yaml.hpp"
 
 #ifndef SPHERICAL_ROBOTS_SOURCE_DIR
 #error "SPHERICAL_ROBOTS_SOURCE_DIR must be defined (CMakeLists.txt)"
@@ -42,21 +43,7 @@ using spherical_robots::terrain::RobotType;
 constexpr double kPi = 3.14159265358979323846;
 const std::string kShipped = SPHERICAL_ROBOTS_SOURCE_DIR "/config/terrain.yaml";
 
-// A YAML file in the test's temp directory, removed when the test ends.
-class TempYaml {
- public:
-  explicit TempYaml(const std::string& text) {
-    static int counter = 0;
-    path_ = ::testing::TempDir() + "terrain_config_" + std::to_string(::getpid()) + "_" +
-            std::to_string(counter++) + ".yaml";
-    std::ofstream(path_) << text;
-  }
-  ~TempYaml() { std::remove(path_.c_str()); }
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
+using spherical_robots::test_support::TempYaml;
 
 TerrainConfig loadText(const std::string& text) {
   const TempYaml file(text);

@@ -25,6 +25,12 @@ std::optional<std::string> LayeredParameterSource::text(const std::string& key) 
   return std::nullopt;
 }
 
+std::optional<std::vector<double>> LayeredParameterSource::numbers(const std::string& key) const {
+  for (auto layer = layers_.rbegin(); layer != layers_.rend(); ++layer)
+    if (std::optional<std::vector<double>> value = (*layer)->numbers(key)) return value;
+  return std::nullopt;
+}
+
 std::optional<std::vector<std::string>> LayeredParameterSource::keys(const std::string& key) const {
   std::optional<std::vector<std::string>> all;
   for (const auto& layer : layers_) {

@@ -52,6 +52,25 @@ std::optional<std::string> YamlParameterSource::text(const std::string& key) con
   return node.as<std::string>();
 }
 
+std::optional<std::vector<double>> YamlParameterSource::numbers(const std::string& key) const {
+  const YAML::Node node = find(key);
+  if (!node.IsDefined() || node.IsNull()) return std::nullopt;
+  std::vector<double> result;
+  try {
+    if (!node.IsSequence()) throw YAML::Exception(YAML::Mark(), "not a list");
+    for (const YAML::Node& item : node) {
+      if (!item.IsScalar()) throw YAML::Exception(YAML::Mark(), "not a scalar");
+      result.push_back(item.as<double>());
+    }
+  } catch (const YAML::Exception&) {
+    std::ostringstream message;
+    message << path_ << ": parameter '" << key << "' must be a list of numbers, got '"
+            << YAML::Dump(node) << "'";
+    throw std::invalid_argument(message.str());
+  }
+  return result;
+}
+
 std::optional<std::vector<std::string>> YamlParameterSource::keys(const std::string& key) const {
   const YAML::Node node = find(key);
   if (!node.IsDefined() || node.IsNull()) return std::nullopt;

@@ -1,11 +1,14 @@
 #include "spherical_robots/ros/freebot_conversions.hpp"
 #include "spherical_robots/core/validation.hpp"
 
+#include <Eigen/Geometry>
+#include <cstdint>
 #include <stdexcept>
 
 namespace spherical_robots::conversions {
 namespace {
 
+constexpr double kTrolleyArrow = 0.02;  // [m] length of a trolley's heading arrow
 // [rad] a trolley heading is an angle the chain winds up; no run turns a trolley a million radians.
 constexpr double kMaxHeading = 1e6;
 
@@ -70,6 +73,91 @@ freebot::ChainState chainStateFromMsg(const spherical_robots::FreebotState& msg)
     state.headings.push_back(msg.heading[i]);
   }
   return state;
+}
+
+
+spherical_robots::FreebotGoalResult toGoalResultMsg(const freebot::GoalVerdict& verdict,
+                                                    const geometry_msgs::Pose& goal,
+                                                    const std::string& frame,
+                                                    const ros::Time& stamp) {
+  using Result = spherical_robots::FreebotGoalResult;
+  using freebot::GoalStatus;
+  static_assert(static_cast<int>(GoalStatus::Moving) == Result::MOVING &&
+                    static_cast<int>(GoalStatus::Arrived) == Result::ARRIVED &&
+                    static_cast<int>(GoalStatus::Unreachable) == Result::UNREACHABLE &&
+                    static_cast<int>(GoalStatus::Rejected) == Result::REJECTED &&
+                    static_cast<int>(GoalStatus::Preempted) == Result::PREEMPTED &&
+                    static_cast<int>(GoalStatus::Aborted) == Result::ABORTED,
+                "freebot::GoalStatus must list msg/FreebotGoalResult.msg's statuses in order");
+  Result result;
+  result.header.stamp = stamp;
+  result.header.frame_id = frame;
+  result.status = static_cast<std::uint8_t>(verdict.status);
+  const Eigen::Vector4d orientation(goal.orientation.x, goal.orientation.y, goal.orientation.z,
+                                    goal.orientation.w);
+  if (Eigen::Vector3d(goal.position.x, goal.position.y, goal.position.z).allFinite() &&
+      orientation.allFinite())
+    result.goal = goal;
+  result.position_error = verdict.position_error;
+  result.orientation_error = verdict.orientation_error;
+  result.elapsed = verdict.elapsed;
+  result.message = verdict.message;
+  return result;
+}
+
+std::string freebotLinkFrame(const std::string& prefix, std::size_t i) {
+  return prefix + "link" + std::to_string(i);
+}
+
+std::vector<geometry_msgs::TransformStamped> freebotChainTransforms(
+    const freebot::SrcManipulator& manipulator, const freebot::ChainState& state,
+    const std::string& prefix, const ros::Time& stamp) {
+  std::vector<geometry_msgs::TransformStamped> transforms = {
+      toTransform(Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity(), kWorldFrame,
+                  freebotLinkFrame(prefix, 0), stamp)};
+  for (std::size_t i = 1; i <= state.joints.size(); ++i) {
+    const freebot::SrcJointState& joint = state.joints[i - 1];
+    transforms.push_back(toTransform(manipulator.joint(i - 1).position(joint),
+                                     freebot::SrcJoint::jointQuaternion(joint),
+                                     freebotLinkFrame(prefix, i - 1), freebotLinkFrame(prefix, i),
+                                     stamp));
+  }
+  return transforms;
+}
+
+visualization_msgs::MarkerArray freebotChainMarkers(const freebot::SrcManipulator& manipulator,
+                                                    const freebot::ChainState& state,
+                                                    const std::string& prefix,
+                                                    const ros::Time& stamp) {
+  const std::vector<double>& radii = manipulator.radii();
+  visualization_msgs::MarkerArray markers;
+  for (std::size_t i = 0; i <= state.joints.size(); ++i) {
+    auto sphere = marker("spheres", static_cast<int>(i), visualization_msgs::Marker::SPHERE,
+                         freebotLinkFrame(prefix, i), stamp);
+    sphere.frame_locked = true;
+    sphere.scale.x = sphere.scale.y = sphere.scale.z = 2.0 * radii[i];
+    sphere.color.r = i == 0 ? 0.5f : 0.2f;
+    sphere.color.g = 0.5f;
+    sphere.color.b = i == 0 ? 0.5f : 0.9f;
+    sphere.color.a = 0.6f;
+    markers.markers.push_back(sphere);
+    if (i == 0) continue;
+    // The trolley at the contact point, heading φ_i in P_i (P_i relative to B_{i-1}: q̃_{i-1,2}).
+    auto trolley = marker("trolleys", static_cast<int>(i), visualization_msgs::Marker::ARROW,
+                          freebotLinkFrame(prefix, i - 1), stamp);
+    trolley.frame_locked = true;
+    const Eigen::Quaterniond plane = state.joints[i - 1].base.conjugate();
+    trolley.pose.position = toPoint(plane * Eigen::Vector3d(0.0, 0.0, radii[i - 1]));
+    trolley.pose.orientation =
+        toQuaternion(plane * Eigen::AngleAxisd(state.headings[i - 1], Eigen::Vector3d::UnitZ()));
+    trolley.scale.x = kTrolleyArrow;
+    trolley.scale.y = trolley.scale.z = 0.2 * kTrolleyArrow;
+    trolley.color.r = 1.0f;
+    trolley.color.g = 0.5f;
+    trolley.color.b = 0.0f;
+    markers.markers.push_back(trolley);
+  }
+  return markers;
 }
 
 }  // namespace spherical_robots::conversions

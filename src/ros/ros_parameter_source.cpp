@@ -2,8 +2,6 @@
 
 #include <XmlRpcValue.h>
 
-#include <cmath>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -43,6 +41,23 @@ std::optional<std::string> RosParameterSource::text(const std::string& key) cons
   return static_cast<std::string>(value);
 }
 
+std::optional<std::vector<double>> RosParameterSource::numbers(const std::string& key) const {
+  XmlRpc::XmlRpcValue value;
+  if (!nh_.getParam(key, value)) return std::nullopt;
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeArray) throwBadType(resolve(key), value, "a list");
+  std::vector<double> result;
+  for (int i = 0; i < value.size(); ++i) {
+    XmlRpc::XmlRpcValue& item = value[i];
+    if (item.getType() == XmlRpc::XmlRpcValue::TypeDouble)
+      result.push_back(static_cast<double>(item));
+    else if (item.getType() == XmlRpc::XmlRpcValue::TypeInt)
+      result.push_back(static_cast<double>(static_cast<int>(item)));
+    else
+      throwBadType(resolve(key) + "[" + std::to_string(i) + "]", item, "a number");
+  }
+  return result;
+}
+
 std::optional<std::vector<std::string>> RosParameterSource::keys(const std::string& key) const {
   XmlRpc::XmlRpcValue value;
   if (!nh_.getParam(key, value)) return std::nullopt;
@@ -66,25 +81,11 @@ double numberParam(const ros::NodeHandle& nh, const std::string& name, double fa
 }
 
 int countParam(const ros::NodeHandle& nh, const std::string& name, int fallback, int minimum) {
-  const double value = numberParam(nh, name, fallback);
-  if (value < minimum || value != std::floor(value) ||
-      value > static_cast<double>(std::numeric_limits<int>::max())) {
-    std::ostringstream what;
-    what << "parameter " << nh.resolveName(name) << " = " << value << " must be an integer >= "
-         << minimum;
-    throw std::invalid_argument(what.str());
-  }
-  return static_cast<int>(value);
+  return config::wholeNumber(RosParameterSource(nh), name, fallback, minimum);
 }
 
 double positiveParam(const ros::NodeHandle& nh, const std::string& name, double fallback) {
-  const double value = numberParam(nh, name, fallback);
-  if (!(value > 0.0)) {
-    std::ostringstream what;
-    what << "parameter " << nh.resolveName(name) << " = " << value << " must be > 0";
-    throw std::invalid_argument(what.str());
-  }
-  return value;
+  return config::positiveNumber(RosParameterSource(nh), name, fallback);
 }
 
 bool boolParam(const ros::NodeHandle& nh, const std::string& name, bool fallback) {

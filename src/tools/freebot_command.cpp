@@ -3,10 +3,13 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
+#include "spherical_robots/config/freebot_config.hpp"
+#include "spherical_robots/config/yaml_parameter_source.hpp"
 #include "spherical_robots/freebot/src_inverse_kinematics.hpp"
 #include "spherical_robots/freebot/src_manipulator.hpp"
 #include "spherical_robots/freebot/trolley_drive.hpp"
@@ -27,8 +30,16 @@ constexpr double kDegreesPerRadian = 180.0 / M_PI;
 std::vector<double> wxyz(const Eigen::Quaterniond& q) { return {q.w(), q.x(), q.y(), q.z()}; }
 std::vector<double> xyz(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
-/// --radii checked for syntax; the core judges the values (a radius <= 0 is exit 4).
+/// FreeBOT's parameters as the stack's nodes read them: DIR/config/freebot.yaml.
+config::YamlParameterSource freebotConfig(const ParsedOptions& options) {
+  return config::YamlParameterSource(configDirectory(options) + "/config/freebot.yaml");
+}
+
+/// --radii checked for syntax, or the configuration's chain; the core judges the values (a radius
+/// <= 0 is exit 4).
 std::vector<double> radiiFrom(const ParsedOptions& options) {
+  if (!options.given("radii"))
+    return config::freebotChain(freebotConfig(options)).manipulator().radii();
   const std::vector<double> radii = options.numberList("radii");
   if (radii.size() < 2) {
     throw UsageError("--radii: give L0,L1,...,Ln with n >= 1 (the base's radius and one per link)");
@@ -154,7 +165,8 @@ one second, so q_i = exp(U_IX x + U_IY y); or by its full state (--joint-quatern
 q_{i,1} (B_i relative to the contact plane P_i) then q_{i-1,2} (B_{i-1} relative to P_i), each
 W,X,Y,Z (Hamilton, scalar first, unit within 1e-9); q_i = conj(q_{i-1,2}) q_{i,1} (eq 6). With
 equal radii every reachable state is a straight roll; with unequal radii the state depends on the
-rolling path and only --joint-quaternions can give all of them.
+rolling path and only --joint-quaternions can give all of them. Without --radii the chain is
+DIR/config/freebot.yaml's (--config DIR), the one the FreeBOT stack's nodes read.
 
 JSON members (numbers with 17 significant digits; SI units, radians):
   radii                  the input radii [m]
@@ -170,7 +182,7 @@ Exit status: 0 success; 2 usage error (unknown or repeated option, malformed num
 two radii, a joint list that does not parse, a joint count that is not the number of radii
 minus 1, both or neither of --joints and --joint-quaternions); 4 invalid input: one-line error on
 stderr and no output file (a radius <= 0, a non-finite number, a quaternion that is not unit
-within 1e-9).
+within 1e-9, without --radii an unreadable config/freebot.yaml or a bad value in it).
 )";
 
 // --- freebot-ik ---------------------------------------------------------------------------------
@@ -184,12 +196,14 @@ int runIk(const ParsedOptions& options, std::ostream& out) {
                      std::to_string(target.size()) +
                      " numbers, expected 3 (X,Y,Z) or 7 (X,Y,Z,QW,QX,QY,QZ)");
   }
-  IkOptions ik;
+  IkOptions ik = config::freebotGoalExecutive(freebotConfig(options)).ik;
   ik.mode =
       options.flag("position-only") || target.size() == 3 ? IkMode::PositionOnly : IkMode::FullPose;
-  ik.position_tolerance = options.number("position-tolerance");
-  ik.orientation_tolerance = options.number("orientation-tolerance");
-  ik.restarts = options.integer("restarts");
+  if (options.given("position-tolerance"))
+    ik.position_tolerance = options.number("position-tolerance");
+  if (options.given("orientation-tolerance"))
+    ik.orientation_tolerance = options.number("orientation-tolerance");
+  if (options.given("restarts")) ik.restarts = options.integer("restarts");
   const int random_seed = options.integer("random-seed");
   if (random_seed < 0) {
     throw InvalidInput("--random-seed must be >= 0, got " + options.text("random-seed"));
@@ -237,7 +251,9 @@ ignored in position-only mode). The solver is the adaptive damped least squares 
 below 0.01) integrated by rolling the joints, step 2/3 s, each joint at most 1 rad per
 iteration, halved until the residual falls; a start ends after 100 iterations or when stuck,
 then it restarts from a seeded random configuration, --restarts times at most
-(docs/conventions.md, "FreeBOT IK"). Deterministic for given inputs.
+(docs/conventions.md, "FreeBOT IK"). Deterministic for given inputs. The chain and the solver's
+tolerances, restarts and iterations not given here are DIR/config/freebot.yaml's (--config DIR),
+as the FreeBOT stack's freebot_ik node reads them.
 
 JSON members (numbers with 17 significant digits; SI units, radians unless _deg):
   success                true exactly when both errors are within the tolerances
@@ -259,7 +275,8 @@ written with success false and the closest pose found; 2 usage error (malformed 
 without 3 or 7 numbers, a --seed that does not parse or has the wrong joint count, fewer than two
 radii, a non-integer --restarts or --random-seed); 4 invalid input: one-line error and no output
 file (a radius <= 0, a non-finite number, a target quaternion that is not unit in full-pose mode,
-a tolerance <= 0, --restarts or --random-seed < 0).
+a tolerance <= 0, --restarts or --random-seed < 0, an unreadable config/freebot.yaml or a bad
+value in it).
 )";
 
 // --- freebot-wheels -----------------------------------------------------------------------------
@@ -270,9 +287,20 @@ int runWheels(const ParsedOptions& options, std::ostream& out) {
   if (trolley_given == wheels_given) {
     throw UsageError("give exactly one of --trolley U_F,U_S and --wheels W_R,W_L");
   }
-  const double wheel_radius = options.number("wheel-radius");
-  const double wheel_interval = options.number("wheel-interval");
-  const std::vector<double> shell = options.numberList("shell-radii", 2);
+  const bool geometry_given = options.given("wheel-radius") && options.given("wheel-interval") &&
+                              options.given("shell-radii");
+  // Absent geometry is module 1's trolley of the configured chain (its shell is sphere B_1).
+  const std::optional<freebot::FreebotChain> chain =
+      geometry_given ? std::nullopt : std::optional(config::freebotChain(freebotConfig(options)));
+  const double wheel_radius = options.given("wheel-radius") ? options.number("wheel-radius")
+                                                            : chain->trolley(0).wheelRadius();
+  const double wheel_interval = options.given("wheel-interval")
+                                    ? options.number("wheel-interval")
+                                    : chain->trolley(0).wheelInterval();
+  const std::vector<double> shell =
+      options.given("shell-radii")
+          ? options.numberList("shell-radii", 2)
+          : std::vector<double>{chain->trolley(0).innerRadius(), chain->trolley(0).outerRadius()};
   const std::vector<double> speeds = options.numberList(trolley_given ? "trolley" : "wheels", 2);
   const freebot::TrolleyDrive drive(wheel_radius, wheel_interval, shell[0], shell[1]);
   freebot::TrolleySpeeds trolley;
@@ -305,7 +333,8 @@ of radius R_W, L_W apart, run on the inner surface (radius R_IN) of a shell of o
 R_OUT (Table II: 0.005, 0.046, 0.032, 0.034). --trolley gives the forward speed U_F [m/s] (of
 the shell's outer surface relative to the trolley) and the steering speed U_S [rad/s]
 (counter-clockwise about the outward normal) and computes the wheel speeds (eq 65); --wheels
-gives the right and left wheel speeds W_R, W_L [rad/s] and computes U_F, U_S (eq 64).
+gives the right and left wheel speeds W_R, W_L [rad/s] and computes U_F, U_S (eq 64). The
+geometry not given here is module 1's trolley in DIR/config/freebot.yaml (--config DIR).
 
 JSON members (numbers with 17 significant digits; SI units):
   mode                   "trolley-to-wheels" or "wheels-to-trolley"
@@ -316,15 +345,18 @@ stdout: one line with the four speeds.
 
 Exit status: 0 success; 2 usage error (malformed number, wrong list length, both or neither of
 --trolley and --wheels); 4 invalid input: one-line error and no output file (a length <= 0 or
-non-finite, R_IN > R_OUT, L_W >= 2 R_IN: the shell cannot hold the wheels).
+non-finite, R_IN > R_OUT, L_W >= 2 R_IN: the shell cannot hold the wheels; without all three
+of --wheel-radius, --wheel-interval, --shell-radii an unreadable config/freebot.yaml or a bad
+value in it).
 )";
 
 OptionSpec radiiOption() {
   return {"radii",
           "L0,L1,...,Ln",
-          "Sphere radii [m], > 0: the fixed base B_0's, then one per link B_1 ... B_n (n >= 1).",
+          "Sphere radii [m], > 0: the fixed base B_0's, then one per link B_1 ... B_n (n >= 1).\n"
+          "Default: freebot/radii of config/freebot.yaml, the FreeBOT stack's chain.",
           "",
-          true,
+          false,
           {}};
 }
 
@@ -352,6 +384,7 @@ Subcommand freebotFkCommand() {
        "",
        false,
        {}},
+      configOption(),
       outOption("JSON file to write (members below)."),
   };
   command.run = runFk;
@@ -385,20 +418,34 @@ Subcommand freebotIkCommand() {
        "",
        false,
        {}},
-      {"position-tolerance", "M", "Success: position error <= M [m], > 0.", "1e-5", false, {}},
-      {"orientation-tolerance",
-       "RAD",
-       "Success: orientation error <= RAD [rad], > 0.",
-       "1e-4",
+      {"position-tolerance",
+       "M",
+       "Success: position error <= M [m], > 0.\n"
+       "Default: freebot/ik/position_tolerance of config/freebot.yaml (1e-5).",
+       "",
        false,
        {}},
-      {"restarts", "N", "Random restarts after the first start, integer >= 0.", "60", false, {}},
+      {"orientation-tolerance",
+       "RAD",
+       "Success: orientation error <= RAD [rad], > 0.\n"
+       "Default: freebot/ik/orientation_tolerance of config/freebot.yaml (1e-4).",
+       "",
+       false,
+       {}},
+      {"restarts",
+       "N",
+       "Random restarts after the first start, integer >= 0.\n"
+       "Default: freebot/ik/restarts of config/freebot.yaml (60).",
+       "",
+       false,
+       {}},
       {"random-seed",
        "S",
        "Seed of the restarts' random configurations, integer >= 0.",
        "1",
        false,
        {}},
+      configOption(),
       outOption("JSON file to write (members below), also when the target is not reached."),
   };
   command.run = runIk;
@@ -411,13 +458,25 @@ Subcommand freebotWheelsCommand() {
   command.summary = "FreeBOT trolley: wheel speeds <-> forward and steering speeds (eqs 64, 65).";
   command.description = kWheelsDescription;
   command.options = {
-      {"wheel-radius", "R_W", "Wheel radius [m], > 0.", "", true, {}},
-      {"wheel-interval", "L_W", "Distance between the wheels [m], > 0 and < 2 R_IN.", "", true, {}},
+      {"wheel-radius",
+       "R_W",
+       "Wheel radius [m], > 0. Default: freebot/trolley/wheel_radius of config/freebot.yaml.",
+       "",
+       false,
+       {}},
+      {"wheel-interval",
+       "L_W",
+       "Distance between the wheels [m], > 0 and < 2 R_IN.\n"
+       "Default: freebot/trolley/wheel_interval of config/freebot.yaml.",
+       "",
+       false,
+       {}},
       {"shell-radii",
        "R_IN,R_OUT",
-       "Inner and outer shell radii [m], 0 < R_IN <= R_OUT.",
+       "Inner and outer shell radii [m], 0 < R_IN <= R_OUT. Default: module 1's of\n"
+       "config/freebot.yaml (l_1 - freebot/trolley/shell_thickness, l_1).",
        "",
-       true,
+       false,
        {}},
       {"trolley",
        "U_F,U_S",
@@ -431,6 +490,7 @@ Subcommand freebotWheelsCommand() {
        "",
        false,
        {}},
+      configOption(),
       outOption("JSON file to write (members below)."),
   };
   command.run = runWheels;

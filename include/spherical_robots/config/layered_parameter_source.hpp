@@ -19,6 +19,7 @@ class LayeredParameterSource final : public ParameterSource {
   /// The value of the last layer that holds the key.
   std::optional<double> number(const std::string& key) const override;
   std::optional<std::string> text(const std::string& key) const override;
+  std::optional<std::vector<double>> numbers(const std::string& key) const override;
   /// The keys of the dictionary at key in every layer that holds one, each once.
   std::optional<std::vector<std::string>> keys(const std::string& key) const override;
   /// "a.yaml + b.yaml"

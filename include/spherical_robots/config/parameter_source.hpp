@@ -15,6 +15,9 @@ class ParameterSource {
   virtual std::optional<double> number(const std::string& key) const = 0;
   /// The string at key, nullopt if absent. @throw std::invalid_argument if present but not a string.
   virtual std::optional<std::string> text(const std::string& key) const = 0;
+  /// The list of numbers at key, nullopt if absent.
+  /// @throw std::invalid_argument if present but not a list of numbers.
+  virtual std::optional<std::vector<double>> numbers(const std::string& key) const = 0;
   /// The keys of the dictionary at key ("" the root), nullopt if absent.
   /// @throw std::invalid_argument if present but not a dictionary.
   virtual std::optional<std::vector<std::string>> keys(const std::string& key) const = 0;
@@ -25,5 +28,11 @@ class ParameterSource {
 /// The number at key, or fallback if absent; throws std::invalid_argument naming the key, the
 /// value and the origin if the value is not finite.
 double finiteNumber(const ParameterSource& source, const std::string& key, double fallback);
+
+/// finiteNumber that must also be > 0; the message names the key, the value and the limit.
+double positiveNumber(const ParameterSource& source, const std::string& key, double fallback);
+
+/// finiteNumber that must also be a whole number >= minimum (and fit an int).
+int wholeNumber(const ParameterSource& source, const std::string& key, int fallback, int minimum);
 
 }  // namespace spherical_robots::config

@@ -1,14 +1,18 @@
 #pragma once
 // The FreeBOT stack's messages: wheel speeds as actuator JointStates, and FreebotState.
 
+#include <geometry_msgs/Pose.h>
 #include <sensor_msgs/JointState.h>
+#include <visualization_msgs/MarkerArray.h>
 
 #include <cstddef>
 #include <string>
 #include <vector>
 
+#include "spherical_robots/FreebotGoalResult.h"
 #include "spherical_robots/FreebotState.h"
 #include "spherical_robots/freebot/freebot_chain.hpp"
+#include "spherical_robots/freebot/goal_executive.hpp"
 #include "spherical_robots/ros/conversions.hpp"
 
 namespace spherical_robots::conversions {
@@ -35,5 +39,27 @@ spherical_robots::FreebotState toFreebotStateMsg(const freebot::ChainState& stat
 /// @throw std::invalid_argument if the arrays differ in length, a quaternion is not unit within
 /// 1e-6 or a heading is not finite or beyond 1e6 rad.
 freebot::ChainState chainStateFromMsg(const spherical_robots::FreebotState& msg);
+
+/// The verdict on a goal whose pose was `goal` (not echoed unless finite: a rejected goal may
+/// hold NaN or 1e300), in `frame`.
+spherical_robots::FreebotGoalResult toGoalResultMsg(const freebot::GoalVerdict& verdict,
+                                                    const geometry_msgs::Pose& goal,
+                                                    const std::string& frame,
+                                                    const ros::Time& stamp);
+
+/// The tf frame of sphere B_i (i = 0: the fixed base): "<prefix>link<i>".
+std::string freebotLinkFrame(const std::string& prefix, std::size_t i);
+
+/// The chain on tf: kWorldFrame -> B_0 (identity), then per joint i B_{i-1} -> B_i.
+std::vector<geometry_msgs::TransformStamped> freebotChainTransforms(
+    const freebot::SrcManipulator& manipulator, const freebot::ChainState& state,
+    const std::string& prefix, const ros::Time& stamp);
+
+/// Per sphere B_i a sphere of radius l_i in its frame (the base grey), and per trolley an arrow
+/// at its contact point, heading φ_i in the contact plane P_i, in B_{i-1}'s frame.
+visualization_msgs::MarkerArray freebotChainMarkers(const freebot::SrcManipulator& manipulator,
+                                                    const freebot::ChainState& state,
+                                                    const std::string& prefix,
+                                                    const ros::Time& stamp);
 
 }  // namespace spherical_robots::conversions

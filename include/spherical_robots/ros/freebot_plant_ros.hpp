@@ -1,35 +1,30 @@
 #pragma once
-// The freebot_plant node: a FreeBOT chain's state integrated from the MEASURED wheel speeds of the
-// hardware interface (core FreebotChain::advance), published as the chain state, tf for every
-// module's sphere and rviz markers. With a real driver it is the chain's dead-reckoning estimate.
+// The freebot_plant node: a FreeBOT chain integrated from the MEASURED wheel speeds (core
+// FreebotChain::advance) and published as its state, tf and markers: with a real driver, the
+// chain's dead-reckoning estimate (docs/nodes.md, "freebot_plant").
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/freebot/freebot_chain.hpp"
 #include "spherical_robots/ros/plant_loop.hpp"
 
 namespace spherical_robots {
 
-/// The chain both FreeBOT nodes read from the node handle's namespace: radii (list [m]: l_0 the
-/// fixed base's, l_1 … l_n, at least two) and trolley/{wheel_radius, wheel_interval,
-/// shell_thickness} [m] (Table II defaults 0.005, 0.046, 0.002).
-/// @throw std::invalid_argument naming the parameter if one is missing or bad.
-freebot::FreebotChain freebotChainFromParams(const ros::NodeHandle& nh);
+/// Every parameter of freebot_plant but its loop's (PlantLoop; docs/nodes.md).
+struct FreebotPlantParameters {
+  freebot::FreebotChain chain;        ///< freebot/radii, freebot/trolley/*
+  std::string frame_prefix;           ///< of every tf frame but world
+  double max_actuator_rate = 1000.0;  ///< [rad/s] a measured rate beyond it is rejected
+};
 
-/// The tf frame of sphere B_i (i = 0: the fixed base): "<prefix>link<i>".
-std::string freebotLinkFrame(const std::string& prefix, std::size_t i);
+/// stack: the stack's namespace (config/freebot.yaml); node: the private one.
+/// @throw std::invalid_argument naming the parameter on a missing or bad one.
+FreebotPlantParameters loadFreebotPlantParameters(const config::ParameterSource& stack,
+                                                  const config::ParameterSource& node);
 
-/// Parameters (private, ~): frame_prefix (""); step [s] (0.01): the tick and the integration
-/// step; publish_rate [Hz] (50): tf and markers; state_timeout [s] (0.1): older measured wheel
-/// speeds count as zero; clock ("ros"), speedup (free: 1),
-/// lockstep_timeout, wait_for_subscribers, start_timeout: as terrain_kinematics; duration [s] (0 = forever); trail_period [s] (0.1):
-/// spacing of the end-effector trail's points.
-/// Subscribes actuators/state (velocities of module<i>_wheel_right/left [rad/s]). Publishes
-/// freebot_state (every tick), tf world -> <prefix>link0 (identity) and <prefix>link<i-1> ->
-/// <prefix>link<i> (B_i's centre and q_i), freebot_markers (spheres and trolleys), trail (B_n's
-/// centre, nav_msgs/Path in world) and /diagnostics.
 class FreebotPlantRos : private PlantModel {
  public:
   /// @throw std::invalid_argument on a bad parameter.
@@ -44,10 +39,9 @@ class FreebotPlantRos : private PlantModel {
   std::optional<Pose> trailPose() const override;
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) override;
   std::string describeState() const override;
+  const freebot::FreebotChain& chain() const { return parameters_.chain; }
 
-  freebot::FreebotChain chain_;
-  std::string prefix_;
-  double max_actuator_rate_;  ///< [rad/s] a measured rate beyond it is rejected (plausibility)
+  FreebotPlantParameters parameters_;
   freebot::ChainState state_;
   std::vector<freebot::WheelSpeeds> wheels_;  ///< last measured [rad/s]
   LoopPublisher state_pub_;
