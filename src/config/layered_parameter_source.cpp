@@ -14,21 +14,19 @@ LayeredParameterSource::LayeredParameterSource(
 }
 
 std::optional<double> LayeredParameterSource::number(const std::string& key) const {
-  for (auto layer = layers_.rbegin(); layer != layers_.rend(); ++layer)
-    if (const std::optional<double> value = (*layer)->number(key)) return value;
-  return std::nullopt;
+  return topmost(&ParameterSource::number, key);
 }
 
 std::optional<std::string> LayeredParameterSource::text(const std::string& key) const {
-  for (auto layer = layers_.rbegin(); layer != layers_.rend(); ++layer)
-    if (std::optional<std::string> value = (*layer)->text(key)) return value;
-  return std::nullopt;
+  return topmost(&ParameterSource::text, key);
 }
 
 std::optional<std::vector<double>> LayeredParameterSource::numbers(const std::string& key) const {
-  for (auto layer = layers_.rbegin(); layer != layers_.rend(); ++layer)
-    if (std::optional<std::vector<double>> value = (*layer)->numbers(key)) return value;
-  return std::nullopt;
+  return topmost(&ParameterSource::numbers, key);
+}
+
+std::optional<std::vector<std::string>> LayeredParameterSource::texts(const std::string& key) const {
+  return topmost(&ParameterSource::texts, key);
 }
 
 std::optional<std::vector<std::string>> LayeredParameterSource::keys(const std::string& key) const {

@@ -71,6 +71,20 @@ std::optional<std::vector<double>> YamlParameterSource::numbers(const std::strin
   return result;
 }
 
+std::optional<std::vector<std::string>> YamlParameterSource::texts(const std::string& key) const {
+  const YAML::Node node = find(key);
+  if (!node.IsDefined() || node.IsNull()) return std::nullopt;
+  std::vector<std::string> result;
+  for (const YAML::Node& item : node) {
+    if (!node.IsSequence() || !item.IsScalar()) break;
+    result.push_back(item.as<std::string>());
+  }
+  if (!node.IsSequence() || result.size() != node.size())
+    throw std::invalid_argument(path_ + ": parameter '" + key + "' must be a list of strings, got '" +
+                                YAML::Dump(node) + "'");
+  return result;
+}
+
 std::optional<std::vector<std::string>> YamlParameterSource::keys(const std::string& key) const {
   const YAML::Node node = find(key);
   if (!node.IsDefined() || node.IsNull()) return std::nullopt;

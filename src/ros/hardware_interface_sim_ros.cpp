@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "spherical_robots/config/actuator_models.hpp"
+#include "spherical_robots/config/hardware_interface_config.hpp"
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 #include "spherical_robots/ros/shared_message.hpp"
@@ -18,78 +18,6 @@
 namespace spherical_robots {
 
 namespace {
-
-std::string describe(const XmlRpc::XmlRpcValue& value) {
-  std::ostringstream out;
-  value.write(out);
-  return out.str();
-}
-
-std::invalid_argument badParameter(const ros::NodeHandle& pnh, const std::string& name,
-                                   const std::string& problem) {
-  return std::invalid_argument("parameter " + pnh.resolveName(name) + " " + problem);
-}
-
-std::vector<std::string> readActuatorNames(const ros::NodeHandle& pnh) {
-  XmlRpc::XmlRpcValue value;
-  if (!pnh.getParam("actuator_names", value))
-    throw badParameter(pnh, "actuator_names",
-                       "is required: the list of actuator names, e.g. [theta, phi, psi]");
-  if (value.getType() != XmlRpc::XmlRpcValue::TypeArray || value.size() == 0)
-    throw badParameter(pnh, "actuator_names",
-                       "must be a non-empty list of strings, got " + describe(value));
-  std::vector<std::string> names;
-  for (int i = 0; i < value.size(); ++i) {
-    if (value[i].getType() != XmlRpc::XmlRpcValue::TypeString)
-      throw badParameter(pnh, "actuator_names",
-                         "must be a non-empty list of strings, got " + describe(value));
-    names.push_back(static_cast<std::string>(value[i]));
-  }
-  return names;
-}
-
-/// ~effort_limits: {name: max effort [N m or N], ...}; the actuators it names are effort actuators.
-std::map<std::string, double> readEffortLimits(const ros::NodeHandle& pnh,
-                                               const std::vector<std::string>& names) {
-  std::map<std::string, double> limits;
-  XmlRpc::XmlRpcValue value;
-  if (!pnh.getParam("effort_limits", value)) return limits;
-  if (value.getType() != XmlRpc::XmlRpcValue::TypeStruct)
-    throw badParameter(pnh, "effort_limits",
-                       "must be a dictionary actuator name -> max effort, got " + describe(value));
-  for (auto it = value.begin(); it != value.end(); ++it) {
-    if (std::find(names.begin(), names.end(), it->first) == names.end())
-      throw badParameter(pnh, "effort_limits/" + it->first, "names no actuator in actuator_names");
-    limits[it->first] = positiveParam(pnh, "effort_limits/" + it->first, 0.0);
-  }
-  return limits;
-}
-
-hardware::SimulatedActuators makeActuators(const ros::NodeHandle& pnh) {
-  const std::vector<std::string> names = readActuatorNames(pnh);
-  hardware::ActuatorLimits velocity_limits;
-  velocity_limits.max_velocity = positiveParam(pnh, "max_velocity", 20.0);
-  velocity_limits.max_acceleration = positiveParam(pnh, "max_acceleration", 50.0);
-  const std::map<std::string, double> effort_limits = readEffortLimits(pnh, names);
-  std::vector<hardware::ActuatorLimits> limits;
-  for (const auto& name : names) {
-    hardware::ActuatorLimits actuator = velocity_limits;
-    if (const auto effort = effort_limits.find(name); effort != effort_limits.end()) {
-      actuator.kind = hardware::ActuatorKind::Effort;
-      actuator.max_effort = effort->second;
-    }
-    limits.push_back(actuator);
-  }
-  const double command_timeout = positiveParam(pnh, "command_timeout", 0.5);
-  const config::ActuatorModels models = config::loadActuatorModels(RosParameterSource(pnh), names);
-  try {
-    return hardware::SimulatedActuators(names, limits, command_timeout, models.models,
-                                        models.noise_seed);
-  } catch (const std::invalid_argument& e) {
-    // The numbers are checked above, so what is left is the names (empty or duplicate).
-    throw badParameter(pnh, "actuator_names", std::string("is invalid: ") + e.what());
-  }
-}
 
 bool isEffortActuator(const hardware::SimulatedActuators& actuators, const std::string& name) {
   const auto& names = actuators.names();
@@ -121,12 +49,12 @@ std::string setpointsOf(const sensor_msgs::JointState& msg,
 }  // namespace
 
 HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHandle pnh)
-    : actuators_(makeActuators(pnh)),
+    : parameters_(config::loadHardwareInterfaceSimParameters(RosParameterSource(pnh))),
+      actuators_(config::makeSimulatedActuators(parameters_)),
       command_input_(nh.resolveName("actuators/command"), actuators_.commandTimeout()),
-      clock_(positiveParam(pnh, "max_clock_step", kDefaultMaxClockStep)),
-      max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
+      clock_(parameters_.max_clock_step),
       updater_(nh, pnh, pnh.getNamespace()) {
-  const double rate = positiveParam(pnh, "rate", 100.0);
+  const double rate = parameters_.rate;
   updater_.setHardwareID("simulated");
   updater_.add("actuators", this, &HardwareInterfaceSimRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
@@ -174,7 +102,7 @@ void HardwareInterfaceSimRos::commandCallback(const sensor_msgs::JointState::Con
   // the order the transport delivered it in (the controller's are stamped with their step).
   const ros::Time stamp = msg->header.stamp;
   const ros::Time now = lockstep_ && stamp > lockstep_->now() &&
-                                (stamp - lockstep_->now()).toSec() <= max_stamp_skew_
+                                (stamp - lockstep_->now()).toSec() <= parameters_.max_stamp_skew
                             ? stamp
                             : this->now();
   followClock(now);

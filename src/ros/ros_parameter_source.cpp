@@ -58,6 +58,20 @@ std::optional<std::vector<double>> RosParameterSource::numbers(const std::string
   return result;
 }
 
+std::optional<std::vector<std::string>> RosParameterSource::texts(const std::string& key) const {
+  XmlRpc::XmlRpcValue value;
+  if (!nh_.getParam(key, value)) return std::nullopt;
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeArray) throwBadType(resolve(key), value, "a list");
+  std::vector<std::string> result;
+  for (int i = 0; i < value.size(); ++i) {
+    XmlRpc::XmlRpcValue& item = value[i];
+    if (item.getType() != XmlRpc::XmlRpcValue::TypeString)
+      throwBadType(resolve(key) + "[" + std::to_string(i) + "]", item, "a string");
+    result.push_back(static_cast<std::string>(item));
+  }
+  return result;
+}
+
 std::optional<std::vector<std::string>> RosParameterSource::keys(const std::string& key) const {
   XmlRpc::XmlRpcValue value;
   if (!nh_.getParam(key, value)) return std::nullopt;

@@ -20,12 +20,22 @@ class LayeredParameterSource final : public ParameterSource {
   std::optional<double> number(const std::string& key) const override;
   std::optional<std::string> text(const std::string& key) const override;
   std::optional<std::vector<double>> numbers(const std::string& key) const override;
+  std::optional<std::vector<std::string>> texts(const std::string& key) const override;
   /// The keys of the dictionary at key in every layer that holds one, each once.
   std::optional<std::vector<std::string>> keys(const std::string& key) const override;
   /// "a.yaml + b.yaml"
   std::string origin() const override;
 
  private:
+  /// The value of the topmost layer that has key.
+  template <typename Value>
+  std::optional<Value> topmost(std::optional<Value> (ParameterSource::*get)(const std::string&) const,
+                               const std::string& key) const {
+    for (auto layer = layers_.rbegin(); layer != layers_.rend(); ++layer)
+      if (std::optional<Value> value = ((**layer).*get)(key)) return value;
+    return std::nullopt;
+  }
+
   std::vector<std::unique_ptr<ParameterSource>> layers_;
 };
 

@@ -18,6 +18,9 @@ class ParameterSource {
   /// The list of numbers at key, nullopt if absent.
   /// @throw std::invalid_argument if present but not a list of numbers.
   virtual std::optional<std::vector<double>> numbers(const std::string& key) const = 0;
+  /// The list of strings at key, nullopt if absent.
+  /// @throw std::invalid_argument if present but not a list of strings.
+  virtual std::optional<std::vector<std::string>> texts(const std::string& key) const = 0;
   /// The keys of the dictionary at key ("" the root), nullopt if absent.
   /// @throw std::invalid_argument if present but not a dictionary.
   virtual std::optional<std::vector<std::string>> keys(const std::string& key) const = 0;

@@ -13,6 +13,7 @@ class YamlParameterSource final : public ParameterSource {
   std::optional<double> number(const std::string& key) const override;
   std::optional<std::string> text(const std::string& key) const override;
   std::optional<std::vector<double>> numbers(const std::string& key) const override;
+  std::optional<std::vector<std::string>> texts(const std::string& key) const override;
   std::optional<std::vector<std::string>> keys(const std::string& key) const override;
   std::string origin() const override { return path_; }
 

@@ -10,6 +10,7 @@
 
 #include <memory>
 
+#include "spherical_robots/config/hardware_interface_config.hpp"
 #include "spherical_robots/core/clock_jump.hpp"
 #include "spherical_robots/hardware/simulated_actuators.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
@@ -23,11 +24,8 @@ namespace spherical_robots {
 class HardwareInterfaceSimRos {
  public:
   /// @param nh the stack's namespace: topics actuators/command, actuators/state, estop.
-  /// @param pnh the node's private namespace: parameters actuator_names, max_velocity [rad/s],
-  ///        max_acceleration [rad/s^2], command_timeout [s], rate [Hz], max_clock_step [s] (5: a
-///        larger forward step of ROS time is a jump, not elapsed time); optional actuator models
-  ///        models/<name>/{time_constant, dead_time, position_resolution, velocity_noise} and
-  ///        noise_seed (docs/hardware_interface.md), all off by default.
+  /// @param pnh the node's private namespace: its parameters (config::HardwareInterfaceSimParameters,
+  ///        docs/nodes.md).
   /// @throw std::invalid_argument on a missing or malformed parameter, naming it and its value.
   HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHandle pnh);
 
@@ -44,6 +42,7 @@ class HardwareInterfaceSimRos {
   void publishState(const ros::Time& stamp);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
+  config::HardwareInterfaceSimParameters parameters_;
   hardware::SimulatedActuators actuators_;
   ros::Publisher state_pub_;
   ros::Subscriber command_sub_;
@@ -54,7 +53,6 @@ class HardwareInterfaceSimRos {
   /// Counts accepted and rejected commands and logs rejections; the watchdog is the actuators'.
   InputMonitor command_input_;
   ClockJumpDetector clock_;
-  double max_stamp_skew_;  ///< [s] in lock-step, how far ahead a command's stamp may be
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
   bool reported_timeout_ = false;

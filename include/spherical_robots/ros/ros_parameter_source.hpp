@@ -20,6 +20,7 @@ class RosParameterSource final : public config::ParameterSource {
   std::optional<double> number(const std::string& key) const override;
   std::optional<std::string> text(const std::string& key) const override;
   std::optional<std::vector<double>> numbers(const std::string& key) const override;
+  std::optional<std::vector<std::string>> texts(const std::string& key) const override;
   std::optional<std::vector<std::string>> keys(const std::string& key) const override;
   /// The namespace, e.g. "/sphere" or "/sphere/terrain_kinematics".
   std::string origin() const override;
