@@ -17,4 +17,11 @@ void rejectMagnitude(double value, double bound, std::string_view what) {
   throw std::invalid_argument(message.str());
 }
 
+void requireAtLeast(double value, double minimum, std::string_view what) {
+  if (std::isfinite(value) && value >= minimum) return;
+  std::ostringstream message;
+  message << what << " must be finite and >= " << minimum << ", got " << value;
+  throw std::invalid_argument(message.str());
+}
+
 }  // namespace spherical_robots

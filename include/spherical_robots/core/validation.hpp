@@ -23,6 +23,9 @@ inline void requirePositive(double value, std::string_view what) {
   if (!std::isfinite(value) || value <= 0.0) rejectNumber(value, what, "finite and > 0");
 }
 
+/// @throw std::invalid_argument "<what> must be finite and >= <minimum>, got <value>" unless it is.
+void requireAtLeast(double value, double minimum, std::string_view what);
+
 /// Plausibility, not only finiteness: a number far outside its physical range (1e300 m/s) is as
 /// wrong as a NaN and overflows into one two operations later.
 /// @throw std::invalid_argument "<what> must be finite with magnitude <= <bound>, got <value>".
