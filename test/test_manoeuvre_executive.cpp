@@ -30,16 +30,7 @@ constexpr Nanoseconds kSecond = 1'000'000'000;
 
 /// launch/rotor_stack.launch's plan: k = 2.5, n = 2, target (0.05 m, 0.03 m, 0.4 rad) = (0.5 R,
 /// 0.3 R, 0.4 rad), radii up to 0.7 R.
-PlanRequest stackRequest() {
-  PlanRequest request;
-  request.k = kK;
-  request.steps = 2;
-  request.u_a = 0.5;
-  request.v_a = 0.3;
-  request.psi = 0.4;
-  request.max_radius = 0.7;
-  return request;
-}
+PlanRequest stackRequest() { return {kK, 2, 0.5, 0.3, 0.4, 0.7, 0}; }
 
 /// launch/rotor_stack.launch's rotor_planner.
 ManoeuvreExecutive::Parameters stackParameters() {

@@ -58,6 +58,25 @@ class SphereSimRotorTest : public ::testing::Test {
 
   std::string output() const { return readFile(out_); }
 
+  /// A command line sphere_sim must refuse: its exit status and a needle of its message.
+  struct BadInput {
+    std::vector<std::string> args;
+    int status;
+    std::string needle;
+  };
+
+  /// Each case exits with its status, says its needle on stderr and writes no file.
+  void expectRefused(const std::vector<BadInput>& cases) {
+    for (const BadInput& c : cases) {
+      fs::remove(out_);
+      const Process p = run(c.args);
+      EXPECT_EQ(p.status, c.status) << c.args[0] << " " << c.args[1] << " " << c.args[2] << ": "
+                                    << p.err;
+      EXPECT_NE(p.err.find(c.needle), std::string::npos) << p.err;
+      EXPECT_FALSE(fs::exists(out_)) << c.needle;
+    }
+  }
+
   fs::path dir_;
   fs::path out_;
 };
@@ -146,12 +165,7 @@ TEST_F(SphereSimRotorTest, PlanWithoutSolutionExits3WithAReason) {
 }
 
 TEST_F(SphereSimRotorTest, BadInputExitStatuses) {
-  struct Case {
-    std::vector<std::string> args;
-    int status;
-    std::string needle;
-  };
-  const std::vector<Case> cases = {
+  expectRefused({
       {{"rotor-step", "--k", "1", "--a", "0.8", "--b", "0.3"}, 4, "0.8"},
       {{"rotor-step", "--k", "nan", "--a", "0.3", "--b", "0.3"}, 4, "k"},
       {{"rotor-step", "--k", "-1", "--a", "0.3", "--b", "0.3"}, 4, "k"},
@@ -163,14 +177,7 @@ TEST_F(SphereSimRotorTest, BadInputExitStatuses) {
       {{"rotor-plan", "--k", "1", "--steps", "1", "--target", "0,1,0", "--max-radius", "0.72"},
        4,
        "max radius"},
-  };
-  for (const Case& c : cases) {
-    fs::remove(out_);
-    const Process p = run(c.args);
-    EXPECT_EQ(p.status, c.status) << c.args[0] << " " << c.args[2] << ": " << p.err;
-    EXPECT_NE(p.err.find(c.needle), std::string::npos) << p.err;
-    EXPECT_FALSE(fs::exists(out_)) << c.needle;
-  }
+  });
 }
 
 /// How far the last row of a rotor-execute CSV is from the target (u, v [m], ψ): the centre on the
@@ -242,34 +249,21 @@ TEST_F(SphereSimRotorTest, ExecuteWithoutAPlanExits3) {
 }
 
 TEST_F(SphereSimRotorTest, ExecuteBadInputNamesTheOption) {
-  struct Case {
-    std::vector<std::string> args;
-    int status;
-    std::string needle;
-  };
-  const std::vector<Case> cases = {
-      {{"--k", "0"}, 4, "--k must be > 0, got 0"},
-      {{"--k", "nan"}, 4, "k"},
-      {{"--steps", "0"}, 4, "--steps must be >= 1, got 0"},
-      {{"--steps", "1.5"}, 2, "steps"},
-      {{"--target", "0.05,0.03"}, 2, "target"},
-      {{"--curve-rate", "-1"}, 4, "--curve-rate must be > 0, got -1"},
-      {{"--max-rotor-speed", "-25"}, 4, "--max-rotor-speed must be >= 0, got -25"},
-      {{"--corrections", "-1"}, 4, "--corrections must be >= 0, got -1"},
-      {{"--correction-tolerance", "0"}, 4, "--correction-tolerance must be > 0, got 0"},
-      {{"--log-rate", "3"}, 4, "--log-rate 3 Hz"},
-      {{"--duration", "20.01"}, 4, "--duration 20.01 s is not a whole number of log periods"},
-      {{"--actuator-models", "/no/such/models.yaml"}, 4, "/no/such/models.yaml"},
-  };
-  for (const Case& c : cases) {
-    fs::remove(out_);
-    std::vector<std::string> args = {"rotor-execute"};
-    args.insert(args.end(), c.args.begin(), c.args.end());
-    const Process p = run(args);
-    EXPECT_EQ(p.status, c.status) << c.args[0] << " " << c.args[1] << ": " << p.err;
-    EXPECT_NE(p.err.find(c.needle), std::string::npos) << p.err;
-    EXPECT_FALSE(fs::exists(out_)) << c.needle;
-  }
+  const std::string e = "rotor-execute";
+  expectRefused({
+      {{e, "--k", "0"}, 4, "--k must be > 0, got 0"},
+      {{e, "--k", "nan"}, 4, "k"},
+      {{e, "--steps", "0"}, 4, "--steps must be >= 1, got 0"},
+      {{e, "--steps", "1.5"}, 2, "steps"},
+      {{e, "--target", "0.05,0.03"}, 2, "target"},
+      {{e, "--curve-rate", "-1"}, 4, "--curve-rate must be > 0, got -1"},
+      {{e, "--max-rotor-speed", "-25"}, 4, "--max-rotor-speed must be >= 0, got -25"},
+      {{e, "--corrections", "-1"}, 4, "--corrections must be >= 0, got -1"},
+      {{e, "--correction-tolerance", "0"}, 4, "--correction-tolerance must be > 0, got 0"},
+      {{e, "--log-rate", "3"}, 4, "--log-rate 3 Hz"},
+      {{e, "--duration", "20.01"}, 4, "--duration 20.01 s is not a whole number of log periods"},
+      {{e, "--actuator-models", "/no/such/models.yaml"}, 4, "/no/such/models.yaml"},
+  });
 }
 
 TEST_F(SphereSimRotorTest, HelpDescribesTheConventions) {

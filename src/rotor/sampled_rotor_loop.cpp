@@ -2,7 +2,6 @@
 
 #include <Eigen/Geometry>
 #include <stdexcept>
-#include <utility>
 
 #include "spherical_robots/core/validation.hpp"
 
@@ -30,17 +29,15 @@ Nanoseconds periodNanoseconds(double period, const char* what) {
 }  // namespace
 
 void validate(const RotorStackSampling& sampling) {
-  const std::pair<double, const char*> fields[] = {
-      {sampling.k, "inertia ratio k"},
-      {sampling.plant_step, "plant step [s]"},
-      {sampling.publish_rate, "plant publish rate [Hz]"},
-      {sampling.state_timeout, "plant state timeout [s]"},
-      {sampling.odom_timeout, "planner odom timeout [s]"},
-      {sampling.hardware_rate, "hardware interface rate [Hz]"},
-      {sampling.max_velocity, "actuator velocity limit [rad/s]"},
-      {sampling.max_acceleration, "actuator acceleration limit [rad/s^2]"},
-      {sampling.command_timeout, "hardware command timeout [s]"}};
-  for (const auto& [value, name] : fields) requirePositive(value, name);
+  requireAllPositive({{sampling.k, "inertia ratio k"},
+                      {sampling.plant_step, "plant step [s]"},
+                      {sampling.publish_rate, "plant publish rate [Hz]"},
+                      {sampling.state_timeout, "plant state timeout [s]"},
+                      {sampling.odom_timeout, "planner odom timeout [s]"},
+                      {sampling.hardware_rate, "hardware interface rate [Hz]"},
+                      {sampling.max_velocity, "actuator velocity limit [rad/s]"},
+                      {sampling.max_acceleration, "actuator acceleration limit [rad/s^2]"},
+                      {sampling.command_timeout, "hardware command timeout [s]"}});
 }
 
 SampledRotorLoop::SampledRotorLoop(const RotorStackSampling& sampling,
