@@ -53,7 +53,7 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
         nh, std::vector<std::pair<ros::Timer*, double>>{{&command_timer_, period}},
         params_.executive.max_clock_step);
   }
-  planStartUpManoeuvre();
+  planStartUpManoeuvre(pnh);
   // The updater publishes only when called: a wall timer keeps /diagnostics going (and the odom
   // input's staleness visible) when no odom arrives.
   diagnostics_timer_ = startDiagnostics(nh, updater_);
@@ -64,7 +64,7 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
                                         << service_.getService());
 }
 
-void RotorPlannerRos::planStartUpManoeuvre() {
+void RotorPlannerRos::planStartUpManoeuvre(const ros::NodeHandle& pnh) {
   if (!params_.manoeuvre) return;
   const RotorPlannerParameters::StartUpManoeuvre& m = *params_.manoeuvre;
   spherical_robots::PlanRotorMotion::Request request;
@@ -76,11 +76,12 @@ void RotorPlannerRos::planStartUpManoeuvre() {
   request.psi = m.psi;
   onPlan(request, response);
   if (!response.success)
-    throw std::invalid_argument("no plan for the start-up manoeuvre (~manoeuvre): " + response.reason);
+    throw std::invalid_argument("no plan for the start-up manoeuvre (" +
+                                pnh.resolveName("manoeuvre") + "): " + response.reason);
   const std::string refused = executive_.execute(static_cast<std::uint32_t>(m.index));
   if (!refused.empty())
-    throw std::invalid_argument("parameter ~manoeuvre/index = " + std::to_string(m.index) + ": " +
-                                refused);
+    throw std::invalid_argument("parameter " + pnh.resolveName("manoeuvre/index") + " = " +
+                                std::to_string(m.index) + ": " + refused);
   if (!lockstep_) command_timer_.start();
 }
 

@@ -41,7 +41,7 @@ class RotorPlannerRos {
   void publishPlan(double k, int steps, double a, double b, double gamma);
   void onExecute(const std_msgs::UInt32& msg);
   /// Plans ~manoeuvre (if set) and asks the executive to execute it at the first step.
-  void planStartUpManoeuvre();
+  void planStartUpManoeuvre(const ros::NodeHandle& pnh);
   /// Logs a refusal as a warning and keeps it for /diagnostics.
   void refuse(const std::string& problem);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
