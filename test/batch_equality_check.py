@@ -10,11 +10,13 @@ state topic with an unbounded queue; the launch argument wait_for_subscribers ma
 only once this checker is connected, so it sees every state from the first. In lock-step the
 results do not depend on the machine's load: there is no timing assert here.
 
-As a rostest node (test/{terrain,roller,norma}_batch_equality.test) and from a shell alike:
-    batch_equality_check.py --stack terrain|roller|norma [--duration S] [--bound 1e-9] \
+As a rostest node (test/{terrain,roller,norma,rotor}_batch_equality.test) and from a shell alike:
+    batch_equality_check.py --stack terrain|roller|norma|rotor [--duration S] [--bound 1e-9] \
         [--sphere-sim PATH] [-- launch args, e.g. robot:=RS path:=diamond nodelet:=true]
 Launch arguments the batch run also takes (terrain: robot, path, model, law, actuator_models;
-roller: path, law, actuator_models) are passed to sphere_sim too.
+roller: path, law, actuator_models; rotor: k, steps, target, curve_rate, actuator_time_constant,
+corrections, correction_tolerance, correction_tilt_tolerance, actuator_models) are passed to
+sphere_sim too.
 """
 import argparse
 import csv
@@ -107,7 +109,34 @@ def roller_case(duration, extra_args):
     return terrain_case(duration, extra_args, 'roller')
 
 
-STACKS = {'terrain': terrain_case, 'roller': roller_case, 'norma': norma_case}
+def rotor_case(duration, extra_args):
+    from nav_msgs.msg import Odometry
+    from sensor_msgs.msg import JointState
+    pose_fields = ([(a, lambda m, a=a: getattr(m.pose.pose.position, a), a, 'm') for a in 'xy'] +
+                   [('q' + a, lambda m, a=a: getattr(m.pose.pose.orientation, a), 'q' + a, '1')
+                    for a in 'wxyz'])
+    speed_fields = [('velocity[%d]' % i, lambda m, i=i: m.velocity[i], 'measured_%d' % (i + 1),
+                     'rad/s') for i in range(2)]
+    sphere_sim_args = ['rotor-execute', '--duration', '%g' % duration, '--log-rate', '50',
+                       '--config', rospkg.RosPack().get_path(PKG)]
+    for name, option in (('k', '--k'), ('steps', '--steps'), ('target', '--target'),
+                         ('curve_rate', '--curve-rate'),
+                         ('actuator_time_constant', '--actuator-time-constant'),
+                         ('corrections', '--corrections'),
+                         ('correction_tolerance', '--correction-tolerance'),
+                         ('correction_tilt_tolerance', '--correction-tilt-tolerance'),
+                         ('actuator_models', '--actuator-models')):
+        value = launch_value(extra_args, name, '')
+        if value:
+            sphere_sim_args += [option, value]
+    return StackCase(
+        launch='rotor_stack.launch', launch_args=['duration:=%g' % duration],
+        ns=launch_value(extra_args, 'ns', 'rotor'),
+        topics=[('odom', Odometry, pose_fields), ('joint_states', JointState, speed_fields)],
+        sphere_sim_args=sphere_sim_args)
+
+
+STACKS = {'terrain': terrain_case, 'roller': roller_case, 'norma': norma_case, 'rotor': rotor_case}
 
 
 def find_sphere_sim():

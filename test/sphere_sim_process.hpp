@@ -1,12 +1,16 @@
 #pragma once
 // Runs the built sphere_sim executable in a directory and captures its exit status, stdout and
-// stderr (for the CLI gtests).
+// stderr, and reads back the CSV it writes (for the CLI gtests).
 
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -58,6 +62,54 @@ inline Process runIn(const std::string& executable, const std::vector<std::strin
   process.out = readFile(out_path);
   process.err = readFile(err_path);
   return process;
+}
+
+/// A table read back from the CSV: every cell must be a complete, finite number.
+struct Csv {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+
+  std::size_t column(const std::string& name) const {
+    for (std::size_t i = 0; i < header.size(); ++i) {
+      if (header[i] == name) return i;
+    }
+    ADD_FAILURE() << "no column " << name;
+    return 0;
+  }
+  double at(std::size_t row, const std::string& name) const {
+    return rows.at(row).at(column(name));
+  }
+};
+
+inline std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> cells;
+  std::istringstream stream(line);
+  for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
+  return cells;
+}
+
+inline Csv readCsv(const std::filesystem::path& path) {
+  Csv csv;
+  std::ifstream file(path);
+  std::string line;
+  if (!std::getline(file, line)) {
+    ADD_FAILURE() << path << " is empty";
+    return csv;
+  }
+  csv.header = split(line);
+  while (std::getline(file, line)) {
+    std::vector<double> row;
+    for (const std::string& cell : split(line)) {
+      char* end = nullptr;
+      const double value = std::strtod(cell.c_str(), &end);
+      EXPECT_TRUE(!cell.empty() && *end == '\0' && std::isfinite(value))
+          << "cell '" << cell << "' in row " << csv.rows.size() << " is not a finite number";
+      row.push_back(value);
+    }
+    EXPECT_EQ(row.size(), csv.header.size()) << "row " << csv.rows.size();
+    csv.rows.push_back(row);
+  }
+  return csv;
 }
 
 }  // namespace sphere_sim_test

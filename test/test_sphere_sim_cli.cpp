@@ -61,53 +61,8 @@ bool mentionsWord(const std::string& text, const std::string& word) {
 using sphere_sim_test::Process;
 using sphere_sim_test::readFile;
 
-/// A table read back from the CSV: every cell must be a complete, finite number.
-struct Csv {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
-
-  std::size_t column(const std::string& name) const {
-    for (std::size_t i = 0; i < header.size(); ++i) {
-      if (header[i] == name) return i;
-    }
-    ADD_FAILURE() << "no column " << name;
-    return 0;
-  }
-  double at(std::size_t row, const std::string& name) const {
-    return rows.at(row).at(column(name));
-  }
-};
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> cells;
-  std::istringstream stream(line);
-  for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
-  return cells;
-}
-
-Csv readCsv(const fs::path& path) {
-  Csv csv;
-  std::ifstream file(path);
-  std::string line;
-  if (!std::getline(file, line)) {
-    ADD_FAILURE() << path << " is empty";
-    return csv;
-  }
-  csv.header = split(line);
-  while (std::getline(file, line)) {
-    std::vector<double> row;
-    for (const std::string& cell : split(line)) {
-      char* end = nullptr;
-      const double value = std::strtod(cell.c_str(), &end);
-      EXPECT_TRUE(!cell.empty() && *end == '\0' && std::isfinite(value))
-          << "cell '" << cell << "' in row " << csv.rows.size() << " is not a finite number";
-      row.push_back(value);
-    }
-    EXPECT_EQ(row.size(), csv.header.size()) << "row " << csv.rows.size();
-    csv.rows.push_back(row);
-  }
-  return csv;
-}
+using sphere_sim_test::Csv;
+using sphere_sim_test::readCsv;
 
 class SphereSimTest : public ::testing::Test {
  protected:

@@ -23,17 +23,15 @@ hardware::SimulatedActuators actuatorsOf(const ActuatorDrive& drive, const Stack
 }  // namespace
 
 void validate(const StackSampling& sampling) {
-  const std::pair<double, const char*> fields[] = {
-      {sampling.plant_step, "plant step [s]"},
-      {sampling.publish_rate, "plant publish rate [Hz]"},
-      {sampling.state_timeout, "plant state timeout [s]"},
-      {sampling.control_rate, "controller rate [Hz]"},
-      {sampling.input_timeout, "controller input timeout [s]"},
-      {sampling.hardware_rate, "hardware interface rate [Hz]"},
-      {sampling.max_velocity, "actuator velocity limit [rad/s]"},
-      {sampling.max_acceleration, "actuator acceleration limit [rad/s^2]"},
-      {sampling.command_timeout, "hardware command timeout [s]"}};
-  for (const auto& [value, name] : fields) requirePositive(value, name);
+  requireAllPositive({{sampling.plant_step, "plant step [s]"},
+                      {sampling.publish_rate, "plant publish rate [Hz]"},
+                      {sampling.state_timeout, "plant state timeout [s]"},
+                      {sampling.control_rate, "controller rate [Hz]"},
+                      {sampling.input_timeout, "controller input timeout [s]"},
+                      {sampling.hardware_rate, "hardware interface rate [Hz]"},
+                      {sampling.max_velocity, "actuator velocity limit [rad/s]"},
+                      {sampling.max_acceleration, "actuator acceleration limit [rad/s^2]"},
+                      {sampling.command_timeout, "hardware command timeout [s]"}});
 }
 
 SampledTerrainLoop::SampledTerrainLoop(const TerrainKinematics& kinematics,

@@ -1,7 +1,7 @@
 #pragma once
-// `sphere_sim rotor-step` and `sphere_sim rotor-plan`: one figure eight of the two-rotor sphere
-// integrated from the zero state, and the n-step geometric-phase planner (Svinin et al.), both
-// written as JSON.
+// `sphere_sim rotor-step`, `rotor-plan` and `rotor-execute`: one figure eight of the two-rotor
+// sphere integrated from the zero state and the n-step geometric-phase planner (Svinin et al.),
+// both written as JSON, and the rotor stack's run of a plan through its rotors, written as CSV.
 
 #include "sphere_sim_cli.hpp"
 
@@ -10,5 +10,6 @@ namespace spherical_robots::sphere_sim {
 /// The subcommands' option tables and run functions, for runSphereSim.
 Subcommand rotorStepCommand();
 Subcommand rotorPlanCommand();
+Subcommand rotorExecuteCommand();
 
 }  // namespace spherical_robots::sphere_sim

@@ -11,7 +11,7 @@
 int main(int argc, char** argv) {
   using namespace spherical_robots::sphere_sim;
   return runSphereSim({terrainCommand(), rollerCommand(), normaCommand(), rotorStepCommand(),
-                       rotorPlanCommand(), freebotFkCommand(), freebotIkCommand(),
-                       freebotWheelsCommand()},
+                       rotorPlanCommand(), rotorExecuteCommand(), freebotFkCommand(),
+                       freebotIkCommand(), freebotWheelsCommand()},
                       std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
 }

@@ -301,6 +301,38 @@ OptionSpec configOption() {
   return spec;
 }
 
+namespace {
+
+/// Step counts beyond this are a typo (--dt 5e-9), not a batch run; it also keeps them exact
+/// in a double and a long.
+constexpr double kMaxSteps = 1e9;
+/// How close a ratio of times must be to a whole number: row times are exact multiples of dt.
+constexpr double kWholeTolerance = 1e-9;
+
+}  // namespace
+
+long wholeSteps(double span, double step, const std::string& what) {
+  const double steps = span / step;
+  if (!(steps <= kMaxSteps)) {
+    throw InvalidInput(what + " is " + formatNumber(steps) + " steps, more than the " +
+                       formatNumber(kMaxSteps) + " a run allows");
+  }
+  const double whole = std::round(steps);
+  if (std::abs(steps - whole) > kWholeTolerance * steps) {
+    throw InvalidInput(what + " is " + formatNumber(steps) + " steps, not a whole number");
+  }
+  return static_cast<long>(whole);
+}
+
+double radiusFromUrdf(const std::string& path) {
+  const std::string xml = config::readTextFile(path);  // its error names the path
+  try {
+    return config::sphereRadiusFromUrdf(xml);
+  } catch (const std::invalid_argument& error) {
+    throw InvalidInput(path + ": " + error.what());
+  }
+}
+
 std::string configDirectory(const ParsedOptions& options) {
   return options.given("config") ? options.text("config") : config::packageShareDirectory();
 }

@@ -118,6 +118,14 @@ OptionSpec configOption();
 /// The directory holding config/ and urdf/: --config if given, else the package's share directory.
 std::string configDirectory(const ParsedOptions& options);
 
+/// span / step [s] as a whole number of steps (a duration or a log period in plant steps); `what`
+/// names the options for the message. @throw InvalidInput if it is more than 1e9 steps (a typo,
+/// not a batch run) or not a whole number.
+long wholeSteps(double span, double step, const std::string& what);
+
+/// The radius [m] of the base_link sphere of the URDF at path. @throw InvalidInput naming the path.
+double radiusFromUrdf(const std::string& path);
+
 /// An output file that appears under its name only when committed: it is written to a temporary
 /// file beside it and renamed, so a run that fails half-way (exit 4) leaves no file behind.
 class OutputFile {

@@ -15,11 +15,6 @@ namespace {
 
 constexpr double kConvergedError = 0.1;  // [m]: the paper's "converged"
 constexpr double kSettleTime = 40.0;     // [s]: the paper's figures settle by then
-/// Step counts beyond this are a typo (--dt 5e-9), not a batch run; it also keeps them exact
-/// in a double and a long.
-constexpr double kMaxSteps = 1e9;
-/// How close a ratio of times must be to a whole number: row times are exact multiples of dt.
-constexpr double kWholeTolerance = 1e-9;
 // launch/roller_stack.launch's motor limits (hardware interface max_velocity, max_acceleration).
 constexpr double kRollerMotorMaxVelocity = 60.0;       // [rad/s]
 constexpr double kRollerMotorMaxAcceleration = 300.0;  // [rad/s^2]
@@ -27,29 +22,6 @@ constexpr double kRollerMotorMaxAcceleration = 300.0;  // [rad/s^2]
 const char* const kColumns[] = {"t",  "x0",     "y0",        "z0",           "xd",       "yd",
                                 "zd", "e_norm", "zeta",      "psi",          "phi",      "cx",
                                 "cy", "cz",     "roll_rate", "lateral_rate", "turn_rate"};
-
-/// span / step, which must be a whole number of steps; `what` names the options for the message.
-long wholeSteps(double span, double step, const std::string& what) {
-  const double steps = span / step;
-  if (!(steps <= kMaxSteps)) {
-    throw InvalidInput(what + " is " + formatNumber(steps) + " steps, more than the " +
-                       formatNumber(kMaxSteps) + " a run allows");
-  }
-  const double whole = std::round(steps);
-  if (std::abs(steps - whole) > kWholeTolerance * steps) {
-    throw InvalidInput(what + " is " + formatNumber(steps) + " steps, not a whole number");
-  }
-  return static_cast<long>(whole);
-}
-
-double radiusFromUrdf(const std::string& path) {
-  const std::string xml = config::readTextFile(path);  // its error names the path
-  try {
-    return config::sphereRadiusFromUrdf(xml);
-  } catch (const std::invalid_argument& error) {
-    throw InvalidInput(path + ": " + error.what());
-  }
-}
 
 TerrainRunSettings settingsFrom(const ParsedOptions& options) {
   TerrainRunSettings settings;

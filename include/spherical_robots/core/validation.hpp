@@ -3,7 +3,9 @@
 // message naming it, instead of travelling on as a NaN.
 
 #include <cmath>
+#include <initializer_list>
 #include <string_view>
+#include <utility>
 
 namespace spherical_robots {
 
@@ -22,6 +24,12 @@ inline void requireFinite(double value, std::string_view what) {
 inline void requirePositive(double value, std::string_view what) {
   if (!std::isfinite(value) || value <= 0.0) rejectNumber(value, what, "finite and > 0");
 }
+
+/// requirePositive on each (value, what) in order: the first that is not finite and > 0 throws.
+void requireAllPositive(std::initializer_list<std::pair<double, std::string_view>> fields);
+
+/// @throw std::invalid_argument "<what> must be finite and >= <minimum>, got <value>" unless it is.
+void requireAtLeast(double value, double minimum, std::string_view what);
 
 /// Plausibility, not only finiteness: a number far outside its physical range (1e300 m/s) is as
 /// wrong as a NaN and overflows into one two operations later.
