@@ -351,7 +351,7 @@ class HardwareInterfaceSimCheck(unittest.TestCase):
         self.e_stop_pub.publish(Bool(data=False))
 
     def test_malformed_parameters_fail_at_startup(self):
-        node_type = rospy.get_param('~node_type', 'hardware_interface_sim_node')
+        node_type = rospy.get_param('~node_type', 'hardware_interface_sim')
         node = roslib.packages.find_node(PKG, node_type)
         self.assertTrue(node, node_type + ' not found')
         base = {'actuator_names': ['theta', 'phi'], 'max_velocity': 5.0}

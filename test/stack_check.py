@@ -35,9 +35,9 @@ NAME = 'stack_check'
 WALL_DEADLINE = 120.0          # [s] wall, for anything the stack should do in time
 SETTLE = (40.0, 60.0)          # [s] simulated window in which tracking has converged
 SLACK = 0.5                    # [s] simulated: message latency at 10x real time (50 ms of wall)
-PLANT_STATUS = 'terrain_kinematics: terrain plant'
+PLANT_STATUS = 'terrain_plant: terrain plant'
 CONTROLLER_STATUS = 'pure_pursuit_controller: pure pursuit controller'
-NODES = ['terrain_kinematics', 'pure_pursuit_controller', 'hardware_interface',
+NODES = ['terrain_plant', 'pure_pursuit_controller', 'hardware_interface',
          'robot_state_publisher']
 
 
@@ -78,7 +78,7 @@ def batch_window():
     import csv
     import roslib.packages
     import rospkg
-    plant, controller = rospy.get_param('terrain_kinematics'), rospy.get_param('pure_pursuit_controller')
+    plant, controller = rospy.get_param('terrain_plant'), rospy.get_param('pure_pursuit_controller')
     out = '/tmp/stack_check_batch_%d.csv' % os.getpid()
     # The roller stack loads config/roller.yaml (roller/...) into its namespace.
     stack = 'roller' if rospy.has_param('roller') else 'terrain'
@@ -103,7 +103,7 @@ def assert_tracking(case, errors):
     file the stack's actuator_models:= names, if any): |e_t| over SETTLE equals the batch run's to
     1e-9; otherwise below ~mean_bound and ~max_bound [m]."""
     if rospy.get_param('~batch', False):
-        mean, worst, count = tracking_in_window(errors, rospy.get_param('terrain_kinematics/step', 0.01))
+        mean, worst, count = tracking_in_window(errors, rospy.get_param('terrain_plant/step', 0.01))
         batch = batch_window()
         rospy.loginfo('batch run over the same window: mean %.17g m, max %.17g m, %d samples' % batch)
         case.assertEqual(count, batch[2])
@@ -478,11 +478,11 @@ class NormaCheck(StackFixture):
         run's largest."""
         import csv
         import roslib.packages
-        first_step = int(round(float(rospy.get_param('norma_dynamics/step', 0.001)) * 1e9))
+        first_step = int(round(float(rospy.get_param('norma_plant/step', 0.001)) * 1e9))
         out = '/tmp/stack_check_norma_%d.csv' % os.getpid()
         subprocess.run([roslib.packages.find_node(PKG, 'sphere_sim')[0], 'norma', '--loop', 'sampled',
-                        '--controller', rospy.get_param('pure_pursuit_controller/controller'),
-                        '--variant', rospy.get_param('norma_dynamics/variant', 'text'),
+                        '--controller', rospy.get_param('norma_controller/controller'),
+                        '--variant', rospy.get_param('norma_plant/variant', 'text'),
                         '--duration', '%g' % self.window, '--log-rate', '1000', '--out', out],
                        check=True, stdout=subprocess.DEVNULL)
         with open(out) as f:
@@ -531,11 +531,11 @@ class NormaCheck(StackFixture):
         publisher = rospy.Publisher('actuators/state', JointState, queue_size=10)
         bad = JointState(name=['pendulum_motor', 'slider_motor'], effort=[float('nan'), 0.0])
         publish_until(publisher, [bad],
-                      lambda: self.rejected_count('norma_dynamics: norma plant',
+                      lambda: self.rejected_count('norma_plant: norma plant',
                                                   'actuators/state') >= 1,
                       'the plant to report a rejected actuators/state on /diagnostics')
         self.assert_still_publishing([self.odom, self.norma_states])
-        self.assert_nodes_alive(['norma_dynamics', 'pure_pursuit_controller',
+        self.assert_nodes_alive(['norma_plant', 'norma_controller',
                                  'hardware_interface', 'robot_state_publisher'])
         self.assertTrue(all(math.isfinite(v) for v in self.norma_states.last().q))
 

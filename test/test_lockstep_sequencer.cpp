@@ -12,7 +12,7 @@ namespace spherical_robots {
 namespace {
 
 constexpr std::int64_t kStep = 10'000'000;  // [ns] 0.01 s
-const std::string kPlant = "/sphere/terrain_kinematics";
+const std::string kPlant = "/sphere/terrain_plant";
 const std::string kController = "/sphere/pure_pursuit_controller";
 const std::string kHardware = "/sphere/hardware_interface";
 

@@ -88,7 +88,7 @@ const SampledStep& SampledNormaLoop::step() {
   const Nanoseconds now = latest_.time + step_ns_;
   const double t = stampSeconds(now);  // ros::Time::toSec(), as every node passes its time on
 
-  // norma_dynamics (plant_loop.cpp, tick): freshness first, then the timeline.
+  // norma_plant (plant_loop.cpp, tick): freshness first, then the timeline.
   const bool fresh = accepted_at_ && withinTimeout(*accepted_at_, now, config_.state_timeout);
   const Efforts driving = drivingEfforts(measured_, fresh);
   const LoopTimeline::Tick tick = timeline_.tick(now);

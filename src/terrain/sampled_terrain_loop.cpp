@@ -80,7 +80,7 @@ void SampledTerrainLoop::step() {
     received_tilt_ = state_.phi;
     received_at_ = now_;
   }
-  // 2. The controller (PurePursuitRos::control), which the sequencer asks when it is due.
+  // 2. The controller (PurePursuitControllerRos::control), which the sequencer asks when it is due.
   if (now_ >= control_due_) {
     control_due_ = now_ + control_period_;
     DriveRates command;

@@ -226,7 +226,7 @@ const char* const kExecuteDescription =
     R"(Runs the rotor stack (launch/rotor_stack.launch with execute:=true, clock:=lockstep) as a
 batch: the plan for --k, --steps, --target is made at the start and executed from the first step
 by the same rotor manoeuvre executive as rotor_planner, through the hardware interface's rotors
-(ideal, 30 rad/s and 300 rad/s^2, or with --actuator-models) and the rotor_sphere_plant model
+(ideal, 30 rad/s and 300 rad/s^2, or with --actuator-models) and the rotor_plant model
 (eq 11 solved for omega, eqs 6-10, RK4 at 1 ms), in the order of one lock-step step: the plant
 advances with the last measured rotor speeds held and publishes odometry at 50 Hz, the executive
 commands every 10 ms from the rest measured from it, the actuators follow at 100 Hz. Times are

@@ -1,5 +1,5 @@
 #pragma once
-// Norma as a plant driven by measured actuator efforts (the norma_dynamics node): the state of
+// Norma as a plant driven by measured actuator efforts (the norma_plant node): the state of
 // eq 46 plus the planar pose of eqs 6 and 12, advanced over a control period with the pendulum
 // torque and slider force held, by fixed-step RK4 (Boost.Odeint). No ROS.
 
@@ -26,7 +26,7 @@ struct Efforts {
 
 /// What drives the plant: the last measured efforts while they are fresh, none once they are
 /// stale (no actuator state within the plant's state_timeout: nothing is known to push). The
-/// norma_dynamics node and the sampled batch loop (sampled_norma_loop.hpp) share this rule.
+/// norma_plant node and the sampled batch loop (sampled_norma_loop.hpp) share this rule.
 Efforts drivingEfforts(const Efforts& measured, bool fresh);
 
 /// The plant's ODE state: q, q̇, X, Y, ψ.

@@ -8,7 +8,7 @@
 // (test/norma_batch_equality.test).
 //
 // One step at time t (the first at t = step, as the lock-step clock's first step):
-// 1. norma_dynamics: the first step starts the timeline; a later one advances the plant by t minus
+// 1. norma_plant: the first step starts the timeline; a later one advances the plant by t minus
 //    the previous step with the last measured efforts held, or none if they are older than
 //    state_timeout; it publishes the state stamped t.
 // 2. pure_pursuit_controller: NormaControlLoop::step(t, state) and the command stamped t; a state

@@ -1,6 +1,5 @@
 #pragma once
-// Norma's two-layer controller in a stack (the pure_pursuit_controller node with
-// ~robot_type: norma): eqs 48-51 and the PID cascade of Fig. 5 (or this project's tracking
+// The norma_controller node: Norma's two-layer controller in a stack, eqs 48-51 and the PID cascade of Fig. 5 (or this project's tracking
 // controller) on the plant's state, writing the pendulum torque and the slider force to the
 // hardware interface's effort actuators.
 

@@ -1,5 +1,5 @@
 #pragma once
-// The norma_dynamics plant node: Norma (eq 46, eqs 6 and 12) integrated from the measured
+// The norma_plant plant node: Norma (eq 46, eqs 6 and 12) integrated from the measured
 // pendulum torque and slider force of the hardware interface, published as its state, odometry,
 // joint states and tf.
 
@@ -14,7 +14,7 @@ namespace spherical_robots {
 /// Parameters (private, ~): variant (text | appendix, "text": docs/errata.md); frame_prefix ("");
 /// step [s] (0.001): the tick and the RK4 step; publish_rate [Hz] (50): odom, joint_states, tf;
 /// trail_period [s] (0.5); clock ("ros"), speedup (free: 1),
-/// lockstep_timeout, wait_for_subscribers, start_timeout: as terrain_kinematics; duration [s] (0 = forever); state_timeout [s]
+/// lockstep_timeout, wait_for_subscribers, start_timeout: as terrain_plant; duration [s] (0 = forever); state_timeout [s]
 /// (0.05): older measured efforts count as zero; initial_psi [rad] (0).
 /// In the node handle's namespace: robot_description (urdf/norma.urdf: masses and lengths).
 /// Subscribes actuators/state (efforts of pendulum_motor [N m] and slider_motor [N]). Publishes

@@ -22,7 +22,7 @@ class RosParameterSource final : public config::ParameterSource {
   std::optional<std::vector<double>> numbers(const std::string& key) const override;
   std::optional<std::vector<std::string>> texts(const std::string& key) const override;
   std::optional<std::vector<std::string>> keys(const std::string& key) const override;
-  /// The namespace, e.g. "/sphere" or "/sphere/terrain_kinematics".
+  /// The namespace, e.g. "/sphere" or "/sphere/terrain_plant".
   std::string origin() const override;
 
   /// The fully resolved name of key, for error messages.

@@ -1,5 +1,5 @@
 #pragma once
-// The rotor_sphere_plant node: the two-rotor sphere (Svinin et al.) rolled from the measured rotor
+// The rotor_plant node: the two-rotor sphere (Svinin et al.) rolled from the measured rotor
 // speeds of the hardware interface (eq 11 solved for ω, eqs 6-10; rotor::advancePlant), published
 // as odometry, tf and the rotors' joint states.
 
@@ -16,7 +16,7 @@ namespace spherical_robots {
 /// > 0), rotor_inertia_scale J_zz / J_r (12).
 /// Private (~): sphere_radius R [m] (0.1); frame_prefix (""); step [s] (0.001): the tick and
 /// the RK4 step; publish_rate [Hz] (50): odom, joint_states, tf; clock ("ros"),
-/// speedup (free: 1), lockstep_timeout, wait_for_subscribers, start_timeout: as terrain_kinematics; duration [s] (0 = forever); state_timeout [s]
+/// speedup (free: 1), lockstep_timeout, wait_for_subscribers, start_timeout: as terrain_plant; duration [s] (0 = forever); state_timeout [s]
 /// (0.5): the rotors keep the last measured speeds (a late state message does not stop them:
 /// the flywheels spin on); older ones count as zero, as the hardware interface's command_timeout
 /// brings the rotors to rest.

@@ -2,7 +2,7 @@
 // The rotor stack's loop as a batch run (docs/lockstep.md, "Equal to the batch run"): what one
 // lock-step step of launch/rotor_stack.launch (execute:=true) does, in its order, with its times
 // as ros::Time carries them (whole nanoseconds, the first step at one plant step). At each step t:
-//   1. the plant (rotor_sphere_plant) advances from its last step to t with the rotor speeds it
+//   1. the plant (rotor_plant) advances from its last step to t with the rotor speeds it
 //      last measured held (at rest if older than its state timeout), and every publish period
 //      sends its odometry;
 //   2. the planner (rotor_planner), every command period, steps its ManoeuvreExecutive with the
@@ -26,9 +26,9 @@ namespace spherical_robots::rotor {
 /// The stack's parameters the loop depends on, as launch/rotor_stack.launch sets them.
 struct RotorStackSampling {
   double k = 2.5;                  ///< the plant's inertia_ratio, > 0
-  double plant_step = 0.001;       ///< rotor_sphere_plant ~step [s]
-  double publish_rate = 50.0;      ///< rotor_sphere_plant ~publish_rate [Hz]: odom
-  double state_timeout = 0.5;      ///< rotor_sphere_plant ~state_timeout [s]: actuator states
+  double plant_step = 0.001;       ///< rotor_plant ~step [s]
+  double publish_rate = 50.0;      ///< rotor_plant ~publish_rate [Hz]: odom
+  double state_timeout = 0.5;      ///< rotor_plant ~state_timeout [s]: actuator states
   double odom_timeout = 0.5;       ///< rotor_planner ~odom_timeout [s]
   double hardware_rate = 100.0;    ///< hardware_interface ~rate [Hz]
   double max_velocity = 30.0;      ///< hardware_interface ~max_velocity [rad/s]
@@ -80,7 +80,7 @@ class SampledRotorLoop {
 
   Nanoseconds now_ = 0;
   LoopTimeline timeline_;  ///< the plant's: start, elapsed time
-  // The plant (rotor_sphere_plant).
+  // The plant (rotor_plant).
   ContactCoordinates state_;
   RotorSpeeds measured_;          ///< the last actuator state read
   Nanoseconds measured_at_ = 0;   ///< 0: never

@@ -3,7 +3,7 @@
 // lock-step step of launch/terrain_stack.launch does, in its order, with its times as ros::Time
 // carries them (whole nanoseconds, from the first step at one plant step) and its messages as
 // float64 values. At each step t:
-//   1. the plant (terrain_kinematics) advances from its last step to t with the rates it last
+//   1. the plant (terrain_plant) advances from its last step to t with the rates it last
 //      measured held (at rest if they are older than the state timeout), and every publish period
 //      sends its state;
 //   2. the controller (pure_pursuit_controller), at its rate, commands from the last state it
@@ -61,9 +61,9 @@ class DirectDrive final : public ActuatorDrive {
 /// How the stack samples its loop: the nodes' parameters as launch/terrain_stack.launch sets them
 /// (launch/roller_stack.launch: max_velocity 60, max_acceleration 300).
 struct StackSampling {
-  double plant_step = 0.01;        ///< terrain_kinematics ~step [s]
-  double publish_rate = 50.0;      ///< terrain_kinematics ~publish_rate [Hz]: terrain_state
-  double state_timeout = 0.5;      ///< terrain_kinematics ~state_timeout [s]: actuator states
+  double plant_step = 0.01;        ///< terrain_plant ~step [s]
+  double publish_rate = 50.0;      ///< terrain_plant ~publish_rate [Hz]: terrain_state
+  double state_timeout = 0.5;      ///< terrain_plant ~state_timeout [s]: actuator states
   double control_rate = 50.0;      ///< pure_pursuit_controller ~rate [Hz]
   double input_timeout = 0.5;      ///< pure_pursuit_controller ~input_timeout [s]: terrain_state
   double hardware_rate = 100.0;    ///< hardware_interface ~rate [Hz]
@@ -121,7 +121,7 @@ class SampledTerrainLoop {
 
   Nanoseconds now_ = 0;
   LoopTimeline timeline_;  ///< the plant's (PlantLoop's): start, elapsed time
-  // The plant (terrain_kinematics).
+  // The plant (terrain_plant).
   TerrainState state_;
   Eigen::Quaterniond orientation_;
   DriveRates measured_;           ///< the last actuator state read

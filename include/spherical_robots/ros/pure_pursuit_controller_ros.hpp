@@ -46,10 +46,10 @@ namespace spherical_robots {
 /// its tilt, read from terrain_state, with ~teleop_tilt_gain [1/s], default 2); what the robot
 /// type cannot follow is ignored with one warning per field.
 /// Both publish actuators/command (sensor_msgs/JointState set-points) and /diagnostics.
-class PurePursuitRos {
+class PurePursuitControllerRos {
  public:
   /// @throw std::invalid_argument on a bad parameter, URDF or terrain configuration.
-  PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh);
+  PurePursuitControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh);
 
  private:
   enum class Mode { Tracking, Teleop };

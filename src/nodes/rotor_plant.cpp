@@ -4,5 +4,5 @@
 
 int main(int argc, char** argv) {
   return spherical_robots::runNode<spherical_robots::RotorPlantRos>(argc, argv,
-                                                                    "rotor_sphere_plant");
+                                                                    "rotor_plant");
 }

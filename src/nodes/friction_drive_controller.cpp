@@ -1,5 +1,5 @@
 // The friction drive's inverse kinematics between the controller and the roller motors.
-#include "spherical_robots/ros/friction_drive_ros.hpp"
+#include "spherical_robots/ros/friction_drive_controller_ros.hpp"
 #include "spherical_robots/ros/run_node.hpp"
 
 int main(int argc, char** argv) {

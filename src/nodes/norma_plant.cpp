@@ -3,5 +3,5 @@
 #include "spherical_robots/ros/run_node.hpp"
 
 int main(int argc, char** argv) {
-  return spherical_robots::runNode<spherical_robots::NormaPlantRos>(argc, argv, "norma_dynamics");
+  return spherical_robots::runNode<spherical_robots::NormaPlantRos>(argc, argv, "norma_plant");
 }

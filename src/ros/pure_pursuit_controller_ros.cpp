@@ -1,4 +1,4 @@
-#include "spherical_robots/ros/pure_pursuit_ros.hpp"
+#include "spherical_robots/ros/pure_pursuit_controller_ros.hpp"
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
 #include "spherical_robots/ros/timer_jump_guard.hpp"
@@ -22,13 +22,13 @@ constexpr int kDesiredPathSamples = 400;
 
 }  // namespace
 
-PurePursuitRos::Mode PurePursuitRos::modeFromString(const std::string& name) {
+PurePursuitControllerRos::Mode PurePursuitControllerRos::modeFromString(const std::string& name) {
   if (name == "tracking") return Mode::Tracking;
   if (name == "teleop") return Mode::Teleop;
   throw std::invalid_argument("unknown mode (tracking | teleop)");
 }
 
-PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
+PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : type_(parsedParam(pnh, "robot_type", "3R", terrain::robotTypeFromString)),
       mode_(parsedParam(pnh, "mode", "tracking", modeFromString)),
       radius_(radiusFromRobotDescription(nh)),
@@ -46,7 +46,7 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       radius_);
 
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
-  state_sub_ = nh.subscribe("terrain_state", kLoopQueueSize, &PurePursuitRos::onTerrainState, this);
+  state_sub_ = nh.subscribe("terrain_state", kLoopQueueSize, &PurePursuitControllerRos::onTerrainState, this);
   if (mode_ == Mode::Tracking) {
     surface_ = config::makeSurface(terrain_config.surface);
     path_ = parsedParam(pnh, "path", "circle", [&terrain_config](const std::string& name) {
@@ -63,13 +63,13 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   } else {
     teleop_mapping_ = std::make_unique<terrain::TeleopMapping>(
         type_, radius_, terrain_config.tilt_limit, positiveParam(pnh, "teleop_tilt_gain", 2.0));
-    cmd_vel_sub_ = nh.subscribe("cmd_vel", 10, &PurePursuitRos::onCmdVel, this);
+    cmd_vel_sub_ = nh.subscribe("cmd_vel", 10, &PurePursuitControllerRos::onCmdVel, this);
     ROS_INFO_STREAM("Teleoperating a " << terrain::toString(type_) << " sphere, R = " << radius_
                                        << " m, from " << input_.topic());
   }
 
   updater_.setHardwareID(terrain::toString(type_) + " sphere");
-  updater_.add("pure pursuit controller", this, &PurePursuitRos::diagnose);
+  updater_.add("pure pursuit controller", this, &PurePursuitControllerRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
   const double period = 1.0 / positiveParam(pnh, "rate", 50.0);
   if (isLockstepParticipant(nh, pnh)) {
@@ -79,14 +79,14 @@ PurePursuitRos::PurePursuitRos(ros::NodeHandle nh, ros::NodeHandle pnh)
         });
     return;
   }
-  timer_ = nh.createTimer(ros::Duration(period), &PurePursuitRos::onTimer, this);
+  timer_ = nh.createTimer(ros::Duration(period), &PurePursuitControllerRos::onTimer, this);
   timer_guard_ = std::make_unique<TimerJumpGuard>(
       nh, std::vector<std::pair<ros::Timer*, double>>{{&timer_, period}}, clock_.maxStep());
 }
 
-ros::Time PurePursuitRos::now() const { return workingTime(lockstep_.get()); }
+ros::Time PurePursuitControllerRos::now() const { return workingTime(lockstep_.get()); }
 
-void PurePursuitRos::onTerrainState(const spherical_robots::TerrainState& msg) {
+void PurePursuitControllerRos::onTerrainState(const spherical_robots::TerrainState& msg) {
   if (msg.robot_type != terrain::toString(type_)) {
     input_.reject("state of a " + msg.robot_type + " robot, this controller drives a " +
                   terrain::toString(type_));
@@ -113,7 +113,7 @@ void PurePursuitRos::onTerrainState(const spherical_robots::TerrainState& msg) {
   if (lockstep_) lockstep_->received(state_sub_.getTopic(), msg.header.stamp);
 }
 
-void PurePursuitRos::onCmdVel(const geometry_msgs::Twist& msg) {
+void PurePursuitControllerRos::onCmdVel(const geometry_msgs::Twist& msg) {
   try {
     const conversions::PlanarTwist twist = conversions::planarTwist(msg, max_cmd_vel_);
     request_ = twist.request;
@@ -125,7 +125,7 @@ void PurePursuitRos::onCmdVel(const geometry_msgs::Twist& msg) {
   }
 }
 
-void PurePursuitRos::warnIgnoredOnce(const std::vector<std::string>& fields) {
+void PurePursuitControllerRos::warnIgnoredOnce(const std::vector<std::string>& fields) {
   for (const std::string& field : fields) {
     if (warned_ignored_.insert(field).second) {
       ROS_WARN_STREAM("A " << terrain::toString(type_) << " sphere cannot follow cmd_vel " << field
@@ -134,12 +134,12 @@ void PurePursuitRos::warnIgnoredOnce(const std::vector<std::string>& fields) {
   }
 }
 
-void PurePursuitRos::onTimer(const ros::TimerEvent& event) {
+void PurePursuitControllerRos::onTimer(const ros::TimerEvent& event) {
   timer_guard_->observe(event);
   control(ros::Time::now());
 }
 
-std::vector<std::string> PurePursuitRos::control(const ros::Time& now) {
+std::vector<std::string> PurePursuitControllerRos::control(const ros::Time& now) {
   const double jump = clock_.jumpOver(now.toSec());
   if (jump != 0.0 && timer_guard_) timer_guard_->reset();
   if (jump != 0.0 && tracker_ && tracker_->started()) {
@@ -160,7 +160,7 @@ std::vector<std::string> PurePursuitRos::control(const ros::Time& now) {
   return step_publications_.take();
 }
 
-terrain::DriveRates PurePursuitRos::track(const ros::Time& now) {
+terrain::DriveRates PurePursuitControllerRos::track(const ros::Time& now) {
   if (!geometry_ || !input_.fresh(now)) return {};
   // Throws on a non-finite error or command; control() commands zero instead.
   const terrain::TrackingCommand tracked =
@@ -171,7 +171,7 @@ terrain::DriveRates PurePursuitRos::track(const ros::Time& now) {
   return tracked.rates;
 }
 
-terrain::DriveRates PurePursuitRos::teleop() {
+terrain::DriveRates PurePursuitControllerRos::teleop() {
   // A person's command timeout counts wall time: at 10x real time, cmd_vel at 10 Hz of wall time
   // would otherwise be 1 s of simulated time apart, twice the timeout.
   if (last_cmd_vel_wall_.isZero() ||
@@ -187,7 +187,7 @@ terrain::DriveRates PurePursuitRos::teleop() {
   return command.rates;
 }
 
-void PurePursuitRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
+void PurePursuitControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   status.summary(diagnostic_msgs::DiagnosticStatus::OK,
                  mode_ == Mode::Tracking ? "tracking " + path_->describe() : "teleop");
   status.add("robot type", terrain::toString(type_));

@@ -3,5 +3,5 @@
 #include "spherical_robots/ros/terrain_plant_ros.hpp"
 
 int main(int argc, char** argv) {
-  return spherical_robots::runNode<spherical_robots::TerrainPlantRos>(argc, argv, "terrain_kinematics");
+  return spherical_robots::runNode<spherical_robots::TerrainPlantRos>(argc, argv, "terrain_plant");
 }

@@ -1,0 +1,50 @@
+#pragma once
+// The roller stack's inverse end of the friction drive (launch/roller_stack.launch), a thin node
+// over roller::RollerActuation:
+//
+//   pure_pursuit_controller (2R) --drive/command--> friction_drive_controller --actuators/command-->
+//   hardware interface
+//
+// The controller asks for a sphere velocity as 2R drive rates; the inverse kinematics turns it
+// into roller motor rates for the hardware interface.
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
+
+#include <vector>
+
+#include "spherical_robots/roller/roller_actuation.hpp"
+#include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/lockstep_participant.hpp"
+#include "spherical_robots/ros/loop_publishers.hpp"
+
+namespace spherical_robots {
+
+/// Parameters: roller/... (config/roller.yaml, the node handle's namespace), robot_description
+/// (the sphere's radius), ~input_timeout [s] (0.5). Subscribes drive/command (JointState theta,
+/// phi [rad/s]); publishes actuators/command (roller_1, roller_2 [rad/s]) once per good command,
+/// and nothing for a bad one, so the hardware interface's watchdog sees a silent controller.
+class FrictionDriveControllerRos {
+ public:
+  /// @throw std::invalid_argument on a bad parameter, URDF or drive geometry.
+  FrictionDriveControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh);
+
+ private:
+  void onDriveCommand(const sensor_msgs::JointState& msg);
+  void convert(const sensor_msgs::JointState& msg);
+  void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  roller::RollerActuation actuation_;
+  std::vector<double> last_motor_rates_;
+  double max_actuator_rate_;  ///< [rad/s] a rate beyond it is rejected (plausibility)
+  InputMonitor input_;
+  StepPublications step_publications_;
+  MessageDrivenWork<sensor_msgs::JointState> work_;
+  ros::Subscriber command_sub_;
+  LoopPublisher command_pub_;
+  diagnostic_updater::Updater updater_;
+  ros::WallTimer diagnostics_timer_;
+};
+
+}  // namespace spherical_robots
