@@ -9,7 +9,6 @@ server spoken to as rviz speaks to it, on the real topics of Debian's interactiv
      keeps the marker's orientation.
 ~position_only (false): the node runs with ~position_only, so the goal's quaternion is all zero.
 """
-import threading
 import time
 import unittest
 
@@ -19,7 +18,7 @@ from geometry_msgs.msg import Pose, PoseStamped
 from visualization_msgs.msg import InteractiveMarkerFeedback, InteractiveMarkerInit, \
     InteractiveMarkerUpdate
 
-from spherical_robots_testing import wait_until
+from spherical_robots_testing import Recorder, wait_until
 
 PKG = 'spherical_robots'
 NAME = 'freebot_target_marker_check'
@@ -36,33 +35,21 @@ class FreebotTargetMarkerCheck(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        cls.lock = threading.Lock()
-        cls.init = None
-        cls.marker_poses = []  # poses of 'target' from update messages
-        cls.goals = []
         server = rospy.get_param('~server', 'freebot_target')
-        rospy.Subscriber(server + '/update_full', InteractiveMarkerInit, cls.on_init)
-        rospy.Subscriber(server + '/update', InteractiveMarkerUpdate, cls.on_update)
-        rospy.Subscriber('goal', PoseStamped, cls.on_goal)
+        cls.inits = Recorder(server + '/update_full', InteractiveMarkerInit)
+        cls.updates = Recorder(server + '/update', InteractiveMarkerUpdate)
+        cls.goals = Recorder('goal', PoseStamped)
         cls.feedback = rospy.Publisher(server + '/feedback', InteractiveMarkerFeedback,
                                        queue_size=10)
         cls.ik_target = rospy.Publisher('ik_target', PoseStamped, queue_size=10)
 
-    @classmethod
-    def on_init(cls, msg):
-        with cls.lock:
-            cls.init = msg
-
-    @classmethod
-    def on_update(cls, msg):
-        with cls.lock:
-            cls.marker_poses += [p.pose for p in msg.poses if p.name == 'target']
-            cls.marker_poses += [m.pose for m in msg.markers if m.name == 'target']
-
-    @classmethod
-    def on_goal(cls, msg):
-        with cls.lock:
-            cls.goals.append(msg)
+    def marker_poses(self):
+        """The poses of 'target' in the update messages so far, in order."""
+        poses = []
+        for msg in self.updates.since(0):
+            poses += [p.pose for p in msg.poses if p.name == 'target']
+            poses += [m.pose for m in msg.markers if m.name == 'target']
+        return poses
 
     def send_feedback(self, event, pose):
         feedback = InteractiveMarkerFeedback(client_id='/rviz/InteractiveMarkers',
@@ -75,14 +62,13 @@ class FreebotTargetMarkerCheck(unittest.TestCase):
         """The marker's pose once the server has moved it to `goal` (sent on ik_target)."""
         x = goal.pose.position.x
         self.ik_target.publish(goal)
-        wait_until(lambda: any(abs(p.position.x - x) < 1e-9 for p in self.marker_poses),
+        wait_until(lambda: any(abs(p.position.x - x) < 1e-9 for p in self.marker_poses()),
                    'the marker at ' + what, DEADLINE)
-        with self.lock:
-            return [p for p in self.marker_poses if abs(p.position.x - x) < 1e-9][-1]
+        return [p for p in self.marker_poses() if abs(p.position.x - x) < 1e-9][-1]
 
     def test_01_offers_the_target_at_table_ii_a(self):
-        wait_until(lambda: self.init is not None, 'update_full', DEADLINE)
-        markers = {m.name: m for m in self.init.markers}
+        wait_until(lambda: self.inits.count() > 0, 'update_full', DEADLINE)
+        markers = {m.name: m for m in self.inits.last().markers}
         self.assertIn('target', markers)
         target = markers['target']
         self.assertEqual(target.header.frame_id, 'world')
@@ -95,26 +81,25 @@ class FreebotTargetMarkerCheck(unittest.TestCase):
                    DEADLINE)
         # interactive_markers' server ignores a new client's feedback for 1 s after the marker's
         # insertion (its guard against two clients dragging at once); a person is slower.
-        wait_until(lambda: self.init is not None, 'update_full', DEADLINE)
+        wait_until(lambda: self.inits.count() > 0, 'update_full', DEADLINE)
         time.sleep(1.5)
         dragged = Pose()
         dragged.position.x, dragged.position.y, dragged.position.z = 0.05, 0.12, 0.15
         dragged.orientation.w = 1.0
         self.send_feedback(InteractiveMarkerFeedback.POSE_UPDATE, dragged)
         time.sleep(0.5)
-        with self.lock:
-            self.assertEqual(self.goals, [], 'a goal while dragging')
+        self.assertEqual(self.goals.since(0), [], 'a goal while dragging')
         # The release follows the drag on the same connection, so the server handled the drag
         # before it: one goal, the released pose, proves the drag sent none.
         released = Pose()
         released.position.x, released.position.y, released.position.z = 0.06, 0.11, 0.14
         released.orientation.w, released.orientation.z = 0.8, 0.6
         self.send_feedback(InteractiveMarkerFeedback.MOUSE_UP, released)
-        wait_until(lambda: len(self.goals) > 0, 'a goal on release', DEADLINE)
+        wait_until(lambda: self.goals.count() > 0, 'a goal on release', DEADLINE)
         time.sleep(0.5)
-        with self.lock:
-            self.assertEqual(len(self.goals), 1)
-            goal = self.goals[0]
+        goals = self.goals.since(0)
+        self.assertEqual(len(goals), 1)
+        goal = goals[0]
         self.assertEqual(goal.header.frame_id, 'world')
         expected = pose_list(released)
         if rospy.get_param('~position_only', False):

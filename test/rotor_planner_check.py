@@ -17,6 +17,8 @@ from std_msgs.msg import UInt32
 from visualization_msgs.msg import Marker
 from spherical_robots.srv import PlanRotorMotion, PlanRotorMotionRequest
 
+from spherical_robots_testing import Recorder, wait_until
+
 PKG = 'spherical_robots'
 NAME = 'rotor_planner_check'
 
@@ -30,10 +32,8 @@ class RotorPlannerCheck(unittest.TestCase):
         rospy.wait_for_service(node + '/plan', timeout=30.0)
         cls.plan = rospy.ServiceProxy(node + '/plan', PlanRotorMotion)
         cls.lock = threading.Lock()
-        cls.path = None
-        cls.marker = None
-        rospy.Subscriber('planned_path', Path, cls.onPath, queue_size=1)
-        rospy.Subscriber('contact_curve', Marker, cls.onMarker, queue_size=1)
+        cls.paths = Recorder('planned_path', Path)
+        cls.markers = Recorder('contact_curve', Marker)
         cls.status = None
         rospy.Subscriber('/diagnostics', DiagnosticArray, cls.onDiagnostics, queue_size=10)
 
@@ -53,16 +53,6 @@ class RotorPlannerCheck(unittest.TestCase):
                 return status
             time.sleep(0.05)
         self.fail('no rotor planner diagnostics with %s; last: %s' % (what, status))
-
-    @classmethod
-    def onPath(cls, msg):
-        with cls.lock:
-            cls.path = msg
-
-    @classmethod
-    def onMarker(cls, msg):
-        with cls.lock:
-            cls.marker = msg
 
     def request(self, k, steps, u, v, psi):
         req = PlanRotorMotionRequest()
@@ -87,16 +77,9 @@ class RotorPlannerCheck(unittest.TestCase):
         self.assertAlmostEqual(res.gamma[0], 0.931883, delta=5e-7)
         self.assertEqual(list(res.length), sorted(res.length))
         self.assertLessEqual(max(res.final_error), 1e-6)
-        deadline = time.time() + 10.0
-        while time.time() < deadline:
-            with self.lock:
-                if self.path is not None and self.marker is not None:
-                    break
-            time.sleep(0.05)
-        with self.lock:
-            path, marker = self.path, self.marker
-        self.assertIsNotNone(path)
-        self.assertIsNotNone(marker)
+        wait_until(lambda: self.paths.count() > 0 and self.markers.count() > 0,
+                   'the latched path and contact curve', 10.0)
+        path, marker = self.paths.last(), self.markers.last()
         start, end = path.poses[0].pose, path.poses[-1].pose
         self.assertAlmostEqual(start.position.x, 0.0, delta=1e-12)
         self.assertAlmostEqual(end.position.x, 0.0, delta=1e-8 * R)

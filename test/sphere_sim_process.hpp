@@ -1,6 +1,7 @@
 #pragma once
 // Runs the built sphere_sim executable in a directory and captures its exit status, stdout and
-// stderr, and reads back the CSV it writes (for the CLI gtests).
+// stderr, and reads back the CSV it writes (for the CLI gtests); SphereSimFixture, their gtest
+// fixture: a directory of each test's own and the path of its output file.
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -15,6 +16,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sphere_sim_test {
@@ -111,5 +113,39 @@ inline Csv readCsv(const std::filesystem::path& path) {
   }
   return csv;
 }
+
+/// The fixture of the sphere_sim gtests (which define SPHERE_SIM_EXECUTABLE, the built
+/// executable): each test runs in a fresh directory dir_, removed after it, and sphere_sim writes
+/// its output to out_ in it.
+class SphereSimFixture : public ::testing::Test {
+ protected:
+  /// dir_ is <temp>/<prefix>.XXXXXX, out_ is dir_/<output>.
+  SphereSimFixture(std::string prefix, std::string output)
+      : prefix_(std::move(prefix)), output_(std::move(output)) {}
+
+  void SetUp() override {
+    std::string pattern =
+        (std::filesystem::temp_directory_path() / (prefix_ + ".XXXXXX")).string();
+    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+    dir_ = pattern;
+    out_ = dir_ / output_;
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  /// `sphere_sim args...` run in directory cwd (default: dir_); a process that cannot start or
+  /// finish is a test failure.
+  Process run(const std::vector<std::string>& args, const std::filesystem::path& cwd = {}) const {
+    const Process process = runIn(SPHERE_SIM_EXECUTABLE, args, dir_, cwd);
+    if (process.status == -1) ADD_FAILURE() << "cannot start or finish " << SPHERE_SIM_EXECUTABLE;
+    return process;
+  }
+
+  std::filesystem::path dir_;
+  std::filesystem::path out_;
+
+ private:
+  std::string prefix_;
+  std::string output_;
+};
 
 }  // namespace sphere_sim_test

@@ -12,13 +12,9 @@
 #include <string>
 
 #include "spherical_robots/config/terrain_config.hpp"
-#include "spherical_robots/config/yaml_parameter_source.hpp"
 #include "spherical_robots/terrain/sampled_terrain_loop.hpp"
 #include "spherical_robots/terrain/terrain_simulation.hpp"
-
-#ifndef SPHERICAL_ROBOTS_SOURCE_DIR
-#error "SPHERICAL_ROBOTS_SOURCE_DIR must be defined (CMakeLists.txt)"
-#endif
+#include "shipped_config.hpp"
 
 namespace {
 
@@ -30,8 +26,7 @@ constexpr double kRadius = 0.2;  // urdf/terrain_robot.urdf
 struct Scenario {
   explicit Scenario(RobotType type, PursuitLaw law = PursuitLaw::Smooth,
                     const std::string& path_name = "circle")
-      : settings(config::loadTerrainConfig(config::YamlParameterSource(
-            SPHERICAL_ROBOTS_SOURCE_DIR "/config/terrain.yaml"))),
+      : settings(spherical_robots::test_support::shippedTerrainConfig()),
         surface(config::makeSurface(settings.surface)),
         path(config::makePath(path_name, settings)),
         kinematics(*surface, type, kRadius, ContactModel::Paper, settings.tilt_limit),

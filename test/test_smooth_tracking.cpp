@@ -24,15 +24,11 @@
 #include <vector>
 
 #include "spherical_robots/config/terrain_config.hpp"
-#include "spherical_robots/config/yaml_parameter_source.hpp"
 #include "spherical_robots/terrain/pursuit_law.hpp"
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
 #include "spherical_robots/terrain/terrain_simulation.hpp"
+#include "shipped_config.hpp"
 #include "terrain_test_support.hpp"
-
-#ifndef SPHERICAL_ROBOTS_SOURCE_DIR
-#error "SPHERICAL_ROBOTS_SOURCE_DIR must be defined (CMakeLists.txt)"
-#endif
 
 namespace {
 
@@ -52,10 +48,7 @@ constexpr double kCircleMean = 0.005;       // [m]
 constexpr double kCircleMax = 0.020;        // [m]
 constexpr double kTimeRatio = 1.2;          // against the paper's law
 
-config::TerrainConfig shippedConfig() {
-  return config::loadTerrainConfig(
-      config::YamlParameterSource(SPHERICAL_ROBOTS_SOURCE_DIR "/config/terrain.yaml"));
-}
+using spherical_robots::test_support::shippedTerrainConfig;
 
 using Case = spherical_robots::test_support::BatchCase;
 
@@ -68,7 +61,7 @@ struct RunLog {
 };
 
 RunLog runLogged(const Case& c, PursuitLaw law, const TerrainState& start = {}) {
-  const config::TerrainConfig cfg = shippedConfig();
+  const config::TerrainConfig cfg = shippedTerrainConfig();
   const auto surface = config::makeSurface(cfg.surface);
   const auto path = config::makePath(c.path, cfg);
   const TerrainKinematics kinematics(*surface, c.type, kRadius, c.model, cfg.tilt_limit);
@@ -107,7 +100,7 @@ struct Summary {
 };
 
 Summary summarise(const Case& c, const RunLog& log) {
-  const config::TerrainConfig cfg = shippedConfig();
+  const config::TerrainConfig cfg = shippedTerrainConfig();
   const double edge_time = std::sqrt(2.0) * cfg.diamond_half_diagonal / cfg.diamond_speed;
   Summary s;
   long settled = 0;

@@ -64,22 +64,9 @@ using sphere_sim_test::readFile;
 using sphere_sim_test::Csv;
 using sphere_sim_test::readCsv;
 
-class SphereSimTest : public ::testing::Test {
+class SphereSimTest : public sphere_sim_test::SphereSimFixture {
  protected:
-  void SetUp() override {
-    std::string pattern = (fs::temp_directory_path() / "sphere_sim_test.XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    dir_ = pattern;
-    out_ = dir_ / "run.csv";
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  /// Runs sphere_sim with args in directory cwd (default: the test's directory).
-  Process run(const std::vector<std::string>& args, const fs::path& cwd = {}) const {
-    const Process process = sphere_sim_test::runIn(SPHERE_SIM_EXECUTABLE, args, dir_, cwd);
-    if (process.status == -1) ADD_FAILURE() << "cannot start or finish " << SPHERE_SIM_EXECUTABLE;
-    return process;
-  }
+  SphereSimTest() : SphereSimFixture("sphere_sim_test", "run.csv") {}
 
   /// `sphere_sim terrain` with the source tree's config and urdf, writing out_.
   Process terrain(const std::vector<std::string>& args) const {
@@ -96,9 +83,6 @@ class SphereSimTest : public ::testing::Test {
       EXPECT_TRUE(name == "stdout.txt" || name == "stderr.txt") << "left behind: " << name;
     }
   }
-
-  fs::path dir_;
-  fs::path out_;
 };
 
 // --- exit statuses -----------------------------------------------------------------------------

@@ -13,7 +13,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -77,26 +76,21 @@ Eigen::Quaterniond quaternion(const ptree& array) {
   return v.size() == 4 ? Eigen::Quaterniond(v[0], v[1], v[2], v[3]) : Eigen::Quaterniond();
 }
 
-class FreebotCliTest : public ::testing::Test {
+class FreebotCliTest : public sphere_sim_test::SphereSimFixture {
  protected:
-  void SetUp() override {
-    std::string pattern = (fs::temp_directory_path() / "sphere_sim_freebot.XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    dir_ = pattern;
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  FreebotCliTest() : SphereSimFixture("sphere_sim_freebot", "out.json") {}
 
   /// `sphere_sim args... --out out.json` in the test's directory, without an old out.json.
   Process run(std::vector<std::string> args) const {
-    fs::remove(dir_ / "out.json");  // a file from an earlier run must not count
+    fs::remove(out_);  // a file from an earlier run must not count
     args.push_back("--out");
-    args.push_back((dir_ / "out.json").string());
-    return sphere_sim_test::runIn(SPHERE_SIM_EXECUTABLE, args, dir_);
+    args.push_back(out_.string());
+    return SphereSimFixture::run(args);
   }
 
   ptree json() const {
     ptree tree;
-    boost::property_tree::read_json((dir_ / "out.json").string(), tree);
+    boost::property_tree::read_json(out_.string(), tree);
     return tree;
   }
 
@@ -105,13 +99,11 @@ class FreebotCliTest : public ::testing::Test {
     const Process process = run(args);
     EXPECT_EQ(process.status, status) << process.err;
     EXPECT_NE(process.err.find(needle), std::string::npos) << process.err;
-    EXPECT_FALSE(fs::exists(dir_ / "out.json")) << args.front();
+    EXPECT_FALSE(fs::exists(out_)) << args.front();
     if (status == 4) {
       EXPECT_EQ(std::count(process.err.begin(), process.err.end(), '\n'), 1) << process.err;
     }
   }
-
-  fs::path dir_;
 };
 
 // Radii of the fixed base and two links, joints as rotation vectors.
@@ -288,8 +280,7 @@ TEST_F(FreebotCliTest, ChainSolverAndTrolleyDefaultToTheStacksConfiguration) {
   // solver's documented defaults, to the last digit of the output.
   const auto output = [&](const std::vector<std::string>& args) {
     EXPECT_EQ(run(args).status, 0) << args.front();
-    std::ifstream file(dir_ / "out.json");
-    return std::string(std::istreambuf_iterator<char>(file), {});
+    return sphere_sim_test::readFile(out_);
   };
   const std::string target = "0.05,0.12,0.15";  // freebot_stack.test's position-only goal
   EXPECT_EQ(output({"freebot-ik", "--target", target}),
@@ -372,7 +363,7 @@ TEST_F(FreebotCliTest, HelpNamesEveryOption) {
        {"--wheel-radius", "--wheel-interval", "--shell-radii", "--trolley", "--wheels", "--config",
         "--out"}}};
   for (const auto& [name, options] : commands) {
-    const Process help = sphere_sim_test::runIn(SPHERE_SIM_EXECUTABLE, {name, "--help"}, dir_);
+    const Process help = SphereSimFixture::run({name, "--help"});
     EXPECT_EQ(help.status, 0);
     for (const std::string& option : options) {
       EXPECT_NE(help.out.find(option), std::string::npos) << name << " " << option;

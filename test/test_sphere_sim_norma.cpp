@@ -4,7 +4,6 @@
 // the logging contract, the slider warning and the exit statuses (DESIGN.md, "sphere_sim").
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -26,68 +25,26 @@ const std::vector<std::string> kColumns = {
 
 using sphere_sim_test::readFile;
 
-struct Result {
-  int status = -1;
-  std::string out, err;
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
+/// A run of `sphere_sim norma`: its exit status, stdout and stderr, and the CSV if it wrote one.
+struct Result : sphere_sim_test::Process, sphere_sim_test::Csv {};
 
-  double at(std::size_t row, const std::string& column) const {
-    for (std::size_t i = 0; i < header.size(); ++i) {
-      if (header[i] == column) return rows.at(row).at(i);
-    }
-    ADD_FAILURE() << "no column " << column;
-    return 0.0;
-  }
-};
-
-class SphereSimNormaTest : public ::testing::Test {
+class SphereSimNormaTest : public sphere_sim_test::SphereSimFixture {
  protected:
-  void SetUp() override {
-    std::string pattern = (fs::temp_directory_path() / "sphere_sim_norma.XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    dir_ = pattern;
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  SphereSimNormaTest() : SphereSimFixture("sphere_sim_norma", "run.csv") {}
 
   /// `sphere_sim norma ARGS --config CONFIG --out DIR/run.csv` (default: the source tree's
   /// urdf/); the CSV read back if it was written.
   Result norma(const std::string& args,
                const std::string& config = SPHERICAL_ROBOTS_SOURCE_DIR) const {
-    const fs::path csv = dir_ / "run.csv";
     std::vector<std::string> argv = {"norma"};
     std::istringstream words(args);
     for (std::string word; words >> word;) argv.push_back(word);
-    argv.insert(argv.end(), {"--config", config, "--out", csv.string()});
-    const sphere_sim_test::Process process =
-        sphere_sim_test::runIn(SPHERE_SIM_EXECUTABLE, argv, dir_);
-    Result r;
-    r.status = process.status;
-    r.out = process.out;
-    r.err = process.err;
-    std::ifstream file(csv);
-    std::string line;
-    if (std::getline(file, line)) {
-      std::istringstream cells(line);
-      for (std::string cell; std::getline(cells, cell, ',');) r.header.push_back(cell);
-      while (std::getline(file, line)) {
-        std::istringstream values(line);
-        std::vector<double> row;
-        for (std::string cell; std::getline(values, cell, ',');) {
-          char* end = nullptr;
-          row.push_back(std::strtod(cell.c_str(), &end));
-          EXPECT_TRUE(!cell.empty() && *end == '\0' && std::isfinite(row.back())) << cell;
-        }
-        EXPECT_EQ(row.size(), r.header.size());
-        r.rows.push_back(row);
-      }
-    }
-    return r;
+    argv.insert(argv.end(), {"--config", config, "--out", out_.string()});
+    const sphere_sim_test::Process process = run(argv);
+    return {process, fs::exists(out_) ? sphere_sim_test::readCsv(out_) : sphere_sim_test::Csv{}};
   }
 
-  bool csvWritten() const { return fs::exists(dir_ / "run.csv"); }
-
-  fs::path dir_;
+  bool csvWritten() const { return fs::exists(out_); }
 };
 
 TEST_F(SphereSimNormaTest, PaperClosedLoopRowsFollowEq52) {
@@ -259,7 +216,7 @@ TEST_F(SphereSimNormaTest, ReadsRobotFromUrdf) {
   EXPECT_NEAR(shipped.at(0, "energy"), 0.5 * 9.81 * 0.15 * (1 - std::cos(0.5)), 1e-14);
   EXPECT_NEAR(longer.at(0, "energy"), 0.5 * 9.81 * 0.30 * (1 - std::cos(0.5)), 1e-14);
   fs::remove(config / "urdf" / "norma.urdf");
-  fs::remove(dir_ / "run.csv");
+  fs::remove(out_);
   const Result missing = norma(args, config.string());
   EXPECT_EQ(missing.status, 4);
   EXPECT_NE(missing.err.find("norma.urdf"), std::string::npos) << missing.err;

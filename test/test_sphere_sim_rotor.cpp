@@ -37,23 +37,15 @@ std::vector<double> numbersOf(const std::string& json, const std::string& key) {
   return values;
 }
 
-class SphereSimRotorTest : public ::testing::Test {
+class SphereSimRotorTest : public sphere_sim_test::SphereSimFixture {
  protected:
-  void SetUp() override {
-    std::string pattern = (fs::temp_directory_path() / "sphere_sim_rotor.XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    dir_ = pattern;
-    out_ = dir_ / "out.json";
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  SphereSimRotorTest() : SphereSimFixture("sphere_sim_rotor", "out.json") {}
 
   /// sphere_sim with args and --out out_.
   Process run(std::vector<std::string> args) const {
     args.push_back("--out");
     args.push_back(out_.string());
-    const Process process = sphere_sim_test::runIn(SPHERE_SIM_EXECUTABLE, args, dir_);
-    if (process.status == -1) ADD_FAILURE() << "cannot start or finish " << SPHERE_SIM_EXECUTABLE;
-    return process;
+    return SphereSimFixture::run(args);
   }
 
   std::string output() const { return readFile(out_); }
@@ -76,9 +68,6 @@ class SphereSimRotorTest : public ::testing::Test {
       EXPECT_FALSE(fs::exists(out_)) << c.needle;
     }
   }
-
-  fs::path dir_;
-  fs::path out_;
 };
 
 TEST_F(SphereSimRotorTest, StepWithThePublishedFirstSolutionMovesAlongV) {

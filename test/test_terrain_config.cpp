@@ -20,11 +20,8 @@
 #include "spherical_robots/config/terrain_config.hpp"
 #include "spherical_robots/config/yaml_parameter_source.hpp"
 #include "expect_invalid_argument.hpp"
+#include "shipped_config.hpp"
 #include "temp_yaml.hpp"
-
-#ifndef SPHERICAL_ROBOTS_SOURCE_DIR
-#error "SPHERICAL_ROBOTS_SOURCE_DIR must be defined (CMakeLists.txt)"
-#endif
 
 namespace {
 
@@ -41,7 +38,7 @@ using spherical_robots::terrain::PursuitLaw;
 using spherical_robots::terrain::RobotType;
 
 constexpr double kPi = 3.14159265358979323846;
-const std::string kShipped = SPHERICAL_ROBOTS_SOURCE_DIR "/config/terrain.yaml";
+const std::string& kShipped = spherical_robots::test_support::kShippedTerrainYaml;
 
 using spherical_robots::test_support::TempYaml;
 

@@ -17,16 +17,12 @@
 #include <vector>
 
 #include "spherical_robots/config/terrain_config.hpp"
-#include "spherical_robots/config/yaml_parameter_source.hpp"
 #include "spherical_robots/terrain/pure_pursuit.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
 #include "spherical_robots/terrain/terrain_simulation.hpp"
+#include "shipped_config.hpp"
 #include "terrain_test_support.hpp"
-
-#ifndef SPHERICAL_ROBOTS_SOURCE_DIR
-#error "SPHERICAL_ROBOTS_SOURCE_DIR must be defined (CMakeLists.txt)"
-#endif
 
 namespace {
 
@@ -41,10 +37,7 @@ constexpr double kThreshold = 0.1;  // "converged": |e_t| < 0.1 m
 constexpr double kSettle = 40.0;
 constexpr double kPaperConvergence = 30.0;  // "approximately 30 seconds"
 
-config::TerrainConfig shippedConfig() {
-  const config::YamlParameterSource source(SPHERICAL_ROBOTS_SOURCE_DIR "/config/terrain.yaml");
-  return config::loadTerrainConfig(source);
-}
+using spherical_robots::test_support::shippedTerrainConfig;
 
 // ------------------------------------------------------------------------------------------
 // The reference paths themselves (the claim is only as good as the target it tracks).
@@ -160,7 +153,7 @@ struct RunResult {
 };
 
 RunResult run(const TrackingCase& c) {
-  const config::TerrainConfig cfg = shippedConfig();
+  const config::TerrainConfig cfg = shippedTerrainConfig();
   const auto surface = config::makeSurface(cfg.surface);
   const auto path = config::makePath(c.path, cfg);
   const TerrainKinematics kin(*surface, c.type, kRadius, c.model, cfg.tilt_limit);
@@ -197,7 +190,7 @@ TEST_P(PaperTrackingClaim, ConvergesWithin30sAndStaysOnThePathAfter40s) {
 
   ASSERT_FALSE(std::isnan(r.time_to_converge)) << "|e_t| never went below " << kThreshold << " m";
   EXPECT_LT(r.time_to_converge, kPaperConvergence);
-  const config::TerrainConfig cfg = shippedConfig();
+  const config::TerrainConfig cfg = shippedTerrainConfig();
   EXPECT_LT(r.mean_after, meanBoundAfterSettling(c, cfg));
   EXPECT_LT(r.max_after, maxBoundAfterSettling(c, cfg));
   // z0 is f(x0, y0) by construction: no drift over 40000 RK4 steps.

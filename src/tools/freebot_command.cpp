@@ -351,13 +351,10 @@ value in it).
 )";
 
 OptionSpec radiiOption() {
-  return {"radii",
-          "L0,L1,...,Ln",
-          "Sphere radii [m], > 0: the fixed base B_0's, then one per link B_1 ... B_n (n >= 1).\n"
-          "Default: freebot/radii of config/freebot.yaml, the FreeBOT stack's chain.",
-          "",
-          false,
-          {}};
+  return optionalOption(
+      "radii", "L0,L1,...,Ln",
+      "Sphere radii [m], > 0: the fixed base B_0's, then one per link B_1 ... B_n (n >= 1).\n"
+      "Default: freebot/radii of config/freebot.yaml, the FreeBOT stack's chain.");
 }
 
 }  // namespace
@@ -370,20 +367,14 @@ Subcommand freebotFkCommand() {
   command.description = kFkDescription;
   command.options = {
       radiiOption(),
-      {"joints",
-       "U1X,U1Y;U2X,U2Y;...",
-       "Each joint's rotation vector [rad] along its tangent-plane axes, ';' between joints.\n"
-       "Not with --joint-quaternions.",
-       "",
-       false,
-       {}},
-      {"joint-quaternions",
-       "W,X,Y,Z,W,X,Y,Z;...",
-       "Each joint's full state: q_{i,1} then q_{i-1,2} (scalar first), ';' between joints.\n"
-       "Not with --joints.",
-       "",
-       false,
-       {}},
+      optionalOption(
+          "joints", "U1X,U1Y;U2X,U2Y;...",
+          "Each joint's rotation vector [rad] along its tangent-plane axes, ';' between joints.\n"
+          "Not with --joint-quaternions."),
+      optionalOption(
+          "joint-quaternions", "W,X,Y,Z,W,X,Y,Z;...",
+          "Each joint's full state: q_{i,1} then q_{i-1,2} (scalar first), ';' between joints.\n"
+          "Not with --joints."),
       configOption(),
       outOption("JSON file to write (members below)."),
   };
@@ -398,53 +389,27 @@ Subcommand freebotIkCommand() {
   command.description = kIkDescription;
   command.options = {
       radiiOption(),
-      {"target",
-       "X,Y,Z[,QW,QX,QY,QZ]",
-       "Target centre of B_n [m] and, for a full pose, its orientation (unit quaternion, scalar\n"
-       "first). Three numbers: position only.",
-       "",
-       true,
-       {}},
-      {"position-only",
-       "",
-       "Reach the position only; the orientation, if given, is ignored.",
-       "",
-       false,
-       {}},
-      {"seed",
-       "U1X,U1Y;U2X,U2Y;...",
-       "First start: each joint's rotation vector [rad] (as freebot-fk --joints); default the\n"
-       "aligned start.",
-       "",
-       false,
-       {}},
-      {"position-tolerance",
-       "M",
-       "Success: position error <= M [m], > 0.\n"
-       "Default: freebot/ik/position_tolerance of config/freebot.yaml (1e-5).",
-       "",
-       false,
-       {}},
-      {"orientation-tolerance",
-       "RAD",
-       "Success: orientation error <= RAD [rad], > 0.\n"
-       "Default: freebot/ik/orientation_tolerance of config/freebot.yaml (1e-4).",
-       "",
-       false,
-       {}},
-      {"restarts",
-       "N",
-       "Random restarts after the first start, integer >= 0.\n"
-       "Default: freebot/ik/restarts of config/freebot.yaml (60).",
-       "",
-       false,
-       {}},
-      {"random-seed",
-       "S",
-       "Seed of the restarts' random configurations, integer >= 0.",
-       "1",
-       false,
-       {}},
+      requiredOption("target", "X,Y,Z[,QW,QX,QY,QZ]",
+                     "Target centre of B_n [m] and, for a full pose, "
+                     "its orientation (unit quaternion, scalar\n"
+                     "first). Three numbers: position only."),
+      flagOption("position-only",
+                 "Reach the position only; the orientation, if given, is ignored."),
+      optionalOption(
+          "seed", "U1X,U1Y;U2X,U2Y;...",
+          "First start: each joint's rotation vector [rad] (as freebot-fk --joints); default the\n"
+          "aligned start."),
+      optionalOption("position-tolerance", "M",
+                     "Success: position error <= M [m], > 0.\n"
+                     "Default: freebot/ik/position_tolerance of config/freebot.yaml (1e-5)."),
+      optionalOption("orientation-tolerance", "RAD",
+                     "Success: orientation error <= RAD [rad], > 0.\n"
+                     "Default: freebot/ik/orientation_tolerance of config/freebot.yaml (1e-4)."),
+      optionalOption("restarts", "N",
+                     "Random restarts after the first start, integer >= 0.\n"
+                     "Default: freebot/ik/restarts of config/freebot.yaml (60)."),
+      optionalOption("random-seed", "S",
+                     "Seed of the restarts' random configurations, integer >= 0.", "1"),
       configOption(),
       outOption("JSON file to write (members below), also when the target is not reached."),
   };
@@ -458,38 +423,20 @@ Subcommand freebotWheelsCommand() {
   command.summary = "FreeBOT trolley: wheel speeds <-> forward and steering speeds (eqs 64, 65).";
   command.description = kWheelsDescription;
   command.options = {
-      {"wheel-radius",
-       "R_W",
-       "Wheel radius [m], > 0. Default: freebot/trolley/wheel_radius of config/freebot.yaml.",
-       "",
-       false,
-       {}},
-      {"wheel-interval",
-       "L_W",
-       "Distance between the wheels [m], > 0 and < 2 R_IN.\n"
-       "Default: freebot/trolley/wheel_interval of config/freebot.yaml.",
-       "",
-       false,
-       {}},
-      {"shell-radii",
-       "R_IN,R_OUT",
-       "Inner and outer shell radii [m], 0 < R_IN <= R_OUT. Default: module 1's of\n"
-       "config/freebot.yaml (l_1 - freebot/trolley/shell_thickness, l_1).",
-       "",
-       false,
-       {}},
-      {"trolley",
-       "U_F,U_S",
-       "Trolley forward [m/s] and steering [rad/s] speeds -> wheel speeds. Not with --wheels.",
-       "",
-       false,
-       {}},
-      {"wheels",
-       "W_R,W_L",
-       "Right and left wheel speeds [rad/s] -> trolley speeds. Not with --trolley.",
-       "",
-       false,
-       {}},
+      optionalOption(
+          "wheel-radius", "R_W",
+          "Wheel radius [m], > 0. Default: freebot/trolley/wheel_radius of config/freebot.yaml."),
+      optionalOption("wheel-interval", "L_W",
+                     "Distance between the wheels [m], > 0 and < 2 R_IN.\n"
+                     "Default: freebot/trolley/wheel_interval of config/freebot.yaml."),
+      optionalOption("shell-radii", "R_IN,R_OUT",
+                     "Inner and outer shell radii [m], 0 < R_IN <= R_OUT. Default: module 1's of\n"
+                     "config/freebot.yaml (l_1 - freebot/trolley/shell_thickness, l_1)."),
+      optionalOption(
+          "trolley", "U_F,U_S",
+          "Trolley forward [m/s] and steering [rad/s] speeds -> wheel speeds. Not with --wheels."),
+      optionalOption("wheels", "W_R,W_L",
+                     "Right and left wheel speeds [rad/s] -> trolley speeds. Not with --trolley."),
       configOption(),
       outOption("JSON file to write (members below)."),
   };

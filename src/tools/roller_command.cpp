@@ -154,42 +154,28 @@ Subcommand rollerCommand() {
       "Friction drive of two constraint rollers on a sphere, with slip (Kimura et al. 2019).";
   command.description = kDescription;
   command.options = {
-      {"r", "R", "Sphere radius r [m], > 0.", "", true, {}},
-      {"contacts",
-       "AZ1,EL1,AZ2,EL2",
-       "Azimuth and elevation of the contact points P1 and P2 [deg] (eq 12): azimuth from x\n"
-       "towards y, elevation from the xy plane towards z. P1 and P2 must not be (anti)parallel.",
-       "",
-       true,
-       {}},
-      {"alpha-deg",
-       "A1,A2",
-       "Roller arrangement angles alpha1, alpha2 [deg] (eq 5): tilt of each roller's axis out of\n"
-       "the plane through O, P1, P2, positive towards e. cos(alpha_i) must not be 0.",
-       "",
-       true,
-       {}},
-      {"speed",
-       "V",
-       "Inverse mode: desired speed |V| of the sphere's centre [m/s], >= 0. Needs\n"
-       "--direction-deg.",
-       "",
-       false,
-       {}},
-      {"direction-deg",
-       "PHI",
-       "Inverse mode: direction of V [deg], counter-clockwise from x (any value; output in\n"
-       "[0, 360)). Needs --speed.",
-       "",
-       false,
-       {}},
-      {"roller-speeds",
-       "V1,V2",
-       "Forward mode: roller peripheral speeds v1, v2 [m/s], signed as in eq 22 (roller i's\n"
-       "surface moves at v_i e_i). Not with --speed/--direction-deg.",
-       "",
-       false,
-       {}},
+      requiredOption("r", "R", "Sphere radius r [m], > 0."),
+      requiredOption(
+          "contacts", "AZ1,EL1,AZ2,EL2",
+          "Azimuth and elevation of the contact points P1 and P2 [deg] (eq 12): azimuth from x\n"
+          "towards y, elevation from the xy plane towards z. P1 and P2 must not be "
+          "(anti)parallel."),
+      requiredOption(
+          "alpha-deg", "A1,A2",
+          "Roller arrangement angles alpha1, alpha2 [deg] (eq 5): "
+          "tilt of each roller's axis out of\n"
+          "the plane through O, P1, P2, positive towards e. cos(alpha_i) must not be 0."),
+      optionalOption("speed", "V",
+                     "Inverse mode: desired speed |V| of the sphere's centre [m/s], >= 0. Needs\n"
+                     "--direction-deg."),
+      optionalOption(
+          "direction-deg", "PHI",
+          "Inverse mode: direction of V [deg], counter-clockwise from x (any value; output in\n"
+          "[0, 360)). Needs --speed."),
+      optionalOption(
+          "roller-speeds", "V1,V2",
+          "Forward mode: roller peripheral speeds v1, v2 [m/s], signed as in eq 22 (roller i's\n"
+          "surface moves at v_i e_i). Not with --speed/--direction-deg."),
       outOption("JSON file to write (members below)."),
   };
   command.run = runRollerCommand;

@@ -282,23 +282,36 @@ int runSphereSim(const std::vector<Subcommand>& commands, const std::vector<std:
   }
 }
 
-OptionSpec outOption(const std::string& what) {
+OptionSpec optionalOption(std::string name, std::string value_name, std::string help,
+                          std::string default_value) {
   OptionSpec spec;
-  spec.name = "out";
-  spec.value_name = "FILE";
-  spec.help = what + "\nWritten only if the run succeeds (exit 0 or 3); never partially.";
+  spec.name = std::move(name);
+  spec.value_name = std::move(value_name);
+  spec.help = std::move(help);
+  spec.default_value = std::move(default_value);
+  return spec;
+}
+
+OptionSpec requiredOption(std::string name, std::string value_name, std::string help) {
+  OptionSpec spec = optionalOption(std::move(name), std::move(value_name), std::move(help));
   spec.required = true;
   return spec;
 }
 
+OptionSpec flagOption(std::string name, std::string help) {
+  return optionalOption(std::move(name), "", std::move(help));
+}
+
+OptionSpec outOption(const std::string& what) {
+  return requiredOption(
+      "out", "FILE", what + "\nWritten only if the run succeeds (exit 0 or 3); never partially.");
+}
+
 OptionSpec configOption() {
-  OptionSpec spec;
-  spec.name = "config";
-  spec.value_name = "DIR";
-  spec.help =
+  return optionalOption(
+      "config", "DIR",
       "Directory holding config/ and urdf/ (a source tree or an installed share directory).\n"
-      "Default: the installed spherical_robots share directory; no ROS environment is needed.";
-  return spec;
+      "Default: the installed spherical_robots share directory; no ROS environment is needed.");
 }
 
 namespace {

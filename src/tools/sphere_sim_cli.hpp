@@ -111,6 +111,14 @@ void printHelp(const Subcommand& command, std::ostream& out);
 int runSphereSim(const std::vector<Subcommand>& commands, const std::vector<std::string>& args,
                  std::ostream& out, std::ostream& err);
 
+/// Rows of an option table by kind, so that a row states only what sets it apart: an optional
+/// option taking a value (default_value used when it is absent; empty: no default), a required
+/// one, and a flag.
+OptionSpec optionalOption(std::string name, std::string value_name, std::string help,
+                          std::string default_value = "");
+OptionSpec requiredOption(std::string name, std::string value_name, std::string help);
+OptionSpec flagOption(std::string name, std::string help);
+
 /// The `--out FILE` option every subcommand has.
 OptionSpec outOption(const std::string& what);
 /// The `--config DIR` option of subcommands that read config/ and urdf/.

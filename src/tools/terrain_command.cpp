@@ -276,25 +276,16 @@ Subcommand terrainCommand() {
        "continuous",
        false,
        {"continuous", "sampled"}},
-      {"duration",
-       "SECONDS",
-       "Simulated time [s], >= 0; a whole number of log periods.",
-       formatNumber(defaults.duration),
-       false,
-       {}},
-      {"dt",
-       "SECONDS",
-       "continuous: fixed RK4 step [s], > 0 (default 0.005); sampled: the plant's step\n"
-       "(default 0.01, the stack's). The duration must be a whole number of steps.",
-       "",
-       false,
-       {}},
-      {"log-rate",
-       "HZ",
-       "CSV rows per second [Hz], > 0; 1/log-rate must be a whole number of steps.",
-       formatNumber(defaults.log_rate),
-       false,
-       {}},
+      optionalOption("duration", "SECONDS",
+                     "Simulated time [s], >= 0; a whole number of log periods.",
+                     formatNumber(defaults.duration)),
+      optionalOption(
+          "dt", "SECONDS",
+          "continuous: fixed RK4 step [s], > 0 (default 0.005); sampled: the plant's step\n"
+          "(default 0.01, the stack's). The duration must be a whole number of steps."),
+      optionalOption("log-rate", "HZ",
+                     "CSV rows per second [Hz], > 0; 1/log-rate must be a whole number of steps.",
+                     formatNumber(defaults.log_rate)),
       {"stack",
        "NAME",
        "With --loop sampled, the launched stack replayed: terrain (launch/terrain_stack.launch)\n"
@@ -304,14 +295,11 @@ Subcommand terrainCommand() {
        "terrain",
        false,
        {"terrain", "roller"}},
-      {"actuator-models",
-       "FILE",
-       "With --loop sampled: the hardware interface's actuator models, the YAML file a stack\n"
-       "takes as actuator_models:= (e.g. config/actuators_realistic.yaml: lag, dead time,\n"
-       "encoder resolution, seeded velocity noise). Default: ideal actuators.",
-       "",
-       false,
-       {}},
+      optionalOption(
+          "actuator-models", "FILE",
+          "With --loop sampled: the hardware interface's actuator models, the YAML file a stack\n"
+          "takes as actuator_models:= (e.g. config/actuators_realistic.yaml: lag, dead time,\n"
+          "encoder resolution, seeded velocity noise). Default: ideal actuators."),
       configOption(),
       outOption("CSV file to write (columns below)."),
   };
