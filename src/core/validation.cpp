@@ -17,10 +17,6 @@ void rejectMagnitude(double value, double bound, std::string_view what) {
   throw std::invalid_argument(message.str());
 }
 
-void requireAllPositive(std::initializer_list<std::pair<double, std::string_view>> fields) {
-  for (const auto& [value, what] : fields) requirePositive(value, what);
-}
-
 void requireAtLeast(double value, double minimum, std::string_view what) {
   if (std::isfinite(value) && value >= minimum) return;
   std::ostringstream message;

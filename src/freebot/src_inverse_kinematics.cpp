@@ -14,26 +14,12 @@
 namespace spherical_robots::freebot {
 namespace {
 
-void requireAtLeast(int value, int limit, const char* what) {
-  if (value < limit) {
-    throw std::invalid_argument(std::string(what) + " must be >= " + std::to_string(limit) +
-                                ", got " + std::to_string(value));
-  }
-}
-
-void requireNonNegative(double value, const char* what) {
-  requireFinite(value, what);
-  if (value < 0.0) {
-    throw std::invalid_argument(std::string(what) + " must be >= 0, got " + std::to_string(value));
-  }
-}
-
 void requireValidOptions(const IkOptions& options) {
-  requirePositive(options.position_tolerance, "IK position tolerance [m]");
-  requirePositive(options.orientation_tolerance, "IK orientation tolerance [rad]");
-  requirePositive(options.position_gain, "IK position gain K_p [1/s]");
-  requirePositive(options.orientation_gain, "IK orientation gain K_a [1/s]");
-  requirePositive(options.step, "IK step [s]");
+  requireAllPositive({{options.position_tolerance, "IK position tolerance [m]"},
+                      {options.orientation_tolerance, "IK orientation tolerance [rad]"},
+                      {options.position_gain, "IK position gain K_p [1/s]"},
+                      {options.orientation_gain, "IK orientation gain K_a [1/s]"},
+                      {options.step, "IK step [s]"}});
   requireNonNegative(options.singular_region, "IK singular region xi");
   requireNonNegative(options.max_damping, "IK maximum damping lambda_max");
   requireNonNegative(options.damping_residual, "IK damping residual");

@@ -20,15 +20,6 @@ std::string joined(const std::vector<std::string>& names) {
   return out;
 }
 
-void requireNonNegative(double value, const std::string& what) {
-  requireFinite(value, what);
-  if (value < 0.0) {
-    std::ostringstream msg;
-    msg << what << " must be finite and >= 0, got " << value;
-    throw std::invalid_argument(msg.str());
-  }
-}
-
 double limitOf(const ActuatorLimits& limits) {
   return limits.kind == ActuatorKind::Effort ? limits.max_effort : limits.max_velocity;
 }

@@ -10,38 +10,19 @@
 
 namespace spherical_robots::norma {
 
-ControllerKind controllerKindFromString(const std::string& name) {
-  if (name == "paper") return ControllerKind::kPaper;
-  if (name == "tracking") return ControllerKind::kTracking;
-  throw std::invalid_argument("unknown Norma controller '" + name + "' (expected paper or tracking)");
-}
-
-std::string toString(ControllerKind kind) {
-  return kind == ControllerKind::kPaper ? "paper" : "tracking";
-}
-
 namespace {
 
 void requireFinitePid(const PidGains& pid, const std::string& name) {
-  requireFinite(pid.kp, name + " kp");
-  requireFinite(pid.ki, name + " ki");
-  requireFinite(pid.kd, name + " kd");
-}
-
-void requireNonNegative(double value, const std::string& what) {
-  requireFinite(value, what);
-  if (value < 0.0) {
-    throw std::invalid_argument(what + " must be >= 0, got " + std::to_string(value));
-  }
+  requireAllFinite({{pid.kp, name + " kp"}, {pid.ki, name + " ki"}, {pid.kd, name + " kd"}});
 }
 
 void requireFinitePath(const PathPoint& r) {
-  requireFinite(r.x, "desired x");
-  requireFinite(r.y, "desired y");
-  requireFinite(r.x_dot, "desired x_dot");
-  requireFinite(r.y_dot, "desired y_dot");
-  requireFinite(r.x_ddot, "desired x_ddot");
-  requireFinite(r.y_ddot, "desired y_ddot");
+  requireAllFinite({{r.x, "desired x"},
+                    {r.y, "desired y"},
+                    {r.x_dot, "desired x_dot"},
+                    {r.y_dot, "desired y_dot"},
+                    {r.x_ddot, "desired x_ddot"},
+                    {r.y_ddot, "desired y_ddot"}});
 }
 
 // Eqs 48-51 on checked input: the controller checks once per evaluation, not twice.

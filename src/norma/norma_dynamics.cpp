@@ -10,16 +10,6 @@
 
 namespace spherical_robots::norma {
 
-LagrangianVariant lagrangianVariantFromString(const std::string& name) {
-  if (name == "text") return LagrangianVariant::kText;
-  if (name == "appendix") return LagrangianVariant::kAppendix;
-  throw std::invalid_argument("unknown Lagrangian variant '" + name + "' (expected text or appendix)");
-}
-
-std::string toString(LagrangianVariant variant) {
-  return variant == LagrangianVariant::kText ? "text" : "appendix";
-}
-
 namespace {
 
 #include "norma_dynamics_terms.inc"
@@ -40,15 +30,15 @@ void mirrorUpper(Matrix4& m) {
 }  // namespace
 
 void validate(const NormaParameters& p) {
-  requirePositive(p.R, "R [m]");
-  requirePositive(p.L, "L [m]");
-  requirePositive(p.L0, "L0 [m]");
-  requirePositive(p.delta0, "delta0 [m]");
-  requirePositive(p.m_shell, "m_shell [kg]");
-  requirePositive(p.m_shaft, "m_shaft [kg]");
-  requirePositive(p.m_pendulum, "m_pendulum [kg]");
-  requirePositive(p.m_slider, "m_slider [kg]");
-  requirePositive(p.g, "g [m/s^2]");
+  requireAllPositive({{p.R, "R [m]"},
+                      {p.L, "L [m]"},
+                      {p.L0, "L0 [m]"},
+                      {p.delta0, "delta0 [m]"},
+                      {p.m_shell, "m_shell [kg]"},
+                      {p.m_shaft, "m_shaft [kg]"},
+                      {p.m_pendulum, "m_pendulum [kg]"},
+                      {p.m_slider, "m_slider [kg]"},
+                      {p.g, "g [m/s^2]"}});
 }
 
 NormaDynamics::NormaDynamics(const NormaParameters& parameters, LagrangianVariant variant)

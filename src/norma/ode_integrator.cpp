@@ -56,10 +56,10 @@ struct FiniteDifferenceJacobian {
 }  // namespace
 
 void validate(const OdeOptions& options) {
-  requirePositive(options.rtol, "rtol");
-  requirePositive(options.atol, "atol");
-  requirePositive(options.initial_step, "initial step [s]");
-  requirePositive(options.fixed_step, "fixed step [s]");
+  requireAllPositive({{options.rtol, "rtol"},
+                      {options.atol, "atol"},
+                      {options.initial_step, "initial step [s]"},
+                      {options.fixed_step, "fixed step [s]"}});
 }
 
 void integrateLogged(const OdeRhs& rhs, OdeState& x, double duration, double log_rate,

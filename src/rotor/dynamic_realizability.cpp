@@ -19,17 +19,11 @@ void requireRatio(double k) {
 
 /// J_zz = 2/3 m_o R² + 2 J_p + J_r (eq 11's definitions), checked.
 double centralInertia(const RotorSphereInertia& inertia) {
-  requirePositive(inertia.total_mass, "total mass M [kg]");
-  requirePositive(inertia.shell_mass, "shell mass m_o [kg]");
-  requirePositive(inertia.radius, "radius R [m]");
-  requirePositive(inertia.rotor_axial, "rotor axial inertia J_r [kg m^2]");
-  requireFinite(inertia.rotor_diametral, "rotor diametral inertia J_p [kg m^2]");
-  if (inertia.rotor_diametral < 0.0) {
-    std::ostringstream message;
-    message << "rotor diametral inertia J_p [kg m^2] must be >= 0, got "
-            << inertia.rotor_diametral;
-    throw std::invalid_argument(message.str());
-  }
+  requireAllPositive({{inertia.total_mass, "total mass M [kg]"},
+                      {inertia.shell_mass, "shell mass m_o [kg]"},
+                      {inertia.radius, "radius R [m]"},
+                      {inertia.rotor_axial, "rotor axial inertia J_r [kg m^2]"}});
+  requireNonNegative(inertia.rotor_diametral, "rotor diametral inertia J_p [kg m^2]");
   if (inertia.shell_mass > inertia.total_mass) {
     std::ostringstream message;
     message << "shell mass m_o [kg] must not exceed the total mass M = " << inertia.total_mass

@@ -6,14 +6,6 @@
 
 namespace spherical_robots::terrain {
 
-PursuitLaw pursuitLawFromString(const std::string& name) {
-  if (name == "paper") return PursuitLaw::Paper;
-  if (name == "smooth") return PursuitLaw::Smooth;
-  throw std::invalid_argument("unknown pursuit law '" + name + "' (expected paper or smooth)");
-}
-
-std::string toString(PursuitLaw law) { return law == PursuitLaw::Paper ? "paper" : "smooth"; }
-
 // Eq 53, and eq 54 signed: atan2 of e_t's components along l and h.
 TrackingError trackingError(const ContactGeometry& geometry, const Eigen::Vector3d& desired,
                             bool with_zeta) {

@@ -4,24 +4,6 @@
 
 namespace spherical_robots::terrain {
 
-RobotType robotTypeFromString(const std::string& name) {
-  if (name == "3R") return RobotType::ThreeAxisRolling;
-  if (name == "2R") return RobotType::TwoAxisRolling;
-  if (name == "RT") return RobotType::RollingAndTurning;
-  if (name == "RS") return RobotType::RollingAndSteering;
-  throw std::invalid_argument("unknown robot type '" + name + "' (expected 3R, 2R, RT or RS)");
-}
-
-std::string toString(RobotType type) {
-  switch (type) {
-    case RobotType::ThreeAxisRolling: return "3R";
-    case RobotType::TwoAxisRolling: return "2R";
-    case RobotType::RollingAndTurning: return "RT";
-    case RobotType::RollingAndSteering: return "RS";
-  }
-  throw std::invalid_argument("invalid RobotType value");
-}
-
 std::array<bool, 3> actuatedRates(RobotType type) {
   switch (type) {
     case RobotType::ThreeAxisRolling: return {true, true, true};

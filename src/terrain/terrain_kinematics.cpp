@@ -42,16 +42,6 @@ void requireFinite(const DriveRates& rates) {
 
 }  // namespace
 
-ContactModel contactModelFromString(const std::string& name) {
-  if (name == "paper") return ContactModel::Paper;
-  if (name == "rolling") return ContactModel::Rolling;
-  throw std::invalid_argument("unknown contact model '" + name + "' (expected paper or rolling)");
-}
-
-std::string toString(ContactModel model) {
-  return model == ContactModel::Paper ? "paper" : "rolling";
-}
-
 TerrainKinematics::TerrainKinematics(const Surface& surface, RobotType type, double radius,
                                      ContactModel model, double tilt_limit)
     : surface_(surface), type_(type), radius_(radius), model_(model), tilt_limit_(tilt_limit) {

@@ -25,8 +25,21 @@ inline void requirePositive(double value, std::string_view what) {
   if (!std::isfinite(value) || value <= 0.0) rejectNumber(value, what, "finite and > 0");
 }
 
+/// @throw std::invalid_argument "<what> must be finite and >= 0, got <value>" unless it is.
+inline void requireNonNegative(double value, std::string_view what) {
+  if (!std::isfinite(value) || value < 0.0) rejectNumber(value, what, "finite and >= 0");
+}
+
 /// requirePositive on each (value, what) in order: the first that is not finite and > 0 throws.
-void requireAllPositive(std::initializer_list<std::pair<double, std::string_view>> fields);
+inline void requireAllPositive(std::initializer_list<std::pair<double, std::string_view>> fields) {
+  for (const auto& [value, what] : fields) requirePositive(value, what);
+}
+
+/// requireFinite on each (value, what) in order: the first that is not finite throws. Inline, as
+/// the single checks: the control loops make it at every step.
+inline void requireAllFinite(std::initializer_list<std::pair<double, std::string_view>> fields) {
+  for (const auto& [value, what] : fields) requireFinite(value, what);
+}
 
 /// @throw std::invalid_argument "<what> must be finite and >= <minimum>, got <value>" unless it is.
 void requireAtLeast(double value, double minimum, std::string_view what);

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "spherical_robots/core/enum_names.hpp"
 #include "spherical_robots/norma/norma_dynamics.hpp"
 
 namespace spherical_robots::norma {
@@ -59,8 +60,12 @@ enum class ControllerKind {
 };
 
 /// "paper" | "tracking". @throw std::invalid_argument naming the choices on another name.
-ControllerKind controllerKindFromString(const std::string& name);
-std::string toString(ControllerKind kind);
+inline constexpr EnumNames<ControllerKind, 2> kControllerNames = {
+    {{ControllerKind::kPaper, "paper"}, {ControllerKind::kTracking, "tracking"}}};
+inline ControllerKind controllerKindFromString(const std::string& name) {
+  return enumFromName(kControllerNames, name, "Norma controller");
+}
+inline std::string toString(ControllerKind kind) { return enumName(kControllerNames, kind); }
 
 /// Gains of both controllers.
 struct ControllerGains {

@@ -11,6 +11,8 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "spherical_robots/core/enum_names.hpp"
+
 namespace spherical_robots::norma {
 
 /// Section 5's robot. m_Sp = m_shell + m_shaft = 3 kg (text after eq 21).
@@ -36,8 +38,12 @@ enum class LagrangianVariant {
 };
 
 /// "text" | "appendix". @throw std::invalid_argument naming the choices on another name.
-LagrangianVariant lagrangianVariantFromString(const std::string& name);
-std::string toString(LagrangianVariant variant);
+inline constexpr EnumNames<LagrangianVariant, 2> kVariantNames = {
+    {{LagrangianVariant::kText, "text"}, {LagrangianVariant::kAppendix, "appendix"}}};
+inline LagrangianVariant lagrangianVariantFromString(const std::string& name) {
+  return enumFromName(kVariantNames, name, "Lagrangian variant");
+}
+inline std::string toString(LagrangianVariant variant) { return enumName(kVariantNames, variant); }
 
 using Vector4 = Eigen::Vector4d;
 using Matrix4 = Eigen::Matrix4d;

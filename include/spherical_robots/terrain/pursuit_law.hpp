@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "spherical_robots/core/enum_names.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/robot_type.hpp"
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
@@ -18,8 +19,12 @@ enum class PursuitLaw {
 };
 
 /// "paper" | "smooth". @throw std::invalid_argument naming the value and the allowed ones.
-PursuitLaw pursuitLawFromString(const std::string& name);
-std::string toString(PursuitLaw law);
+inline constexpr EnumNames<PursuitLaw, 2> kPursuitLawNames = {
+    {{PursuitLaw::Paper, "paper"}, {PursuitLaw::Smooth, "smooth"}}};
+inline PursuitLaw pursuitLawFromString(const std::string& name) {
+  return enumFromName(kPursuitLawNames, name, "pursuit law");
+}
+inline std::string toString(PursuitLaw law) { return enumName(kPursuitLawNames, law); }
 
 /// The tracking error of eqs 53-54, with zeta signed.
 struct TrackingError {

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "spherical_robots/core/enum_names.hpp"
+
 namespace spherical_robots::terrain {
 
 enum class RobotType {
@@ -15,8 +17,13 @@ enum class RobotType {
 };
 
 /// "3R", "2R", "RT", "RS" <-> RobotType. @throw std::invalid_argument on an unknown name.
-RobotType robotTypeFromString(const std::string& name);
-std::string toString(RobotType type);
+inline constexpr EnumNames<RobotType, 4> kRobotTypeNames = {
+    {{RobotType::ThreeAxisRolling, "3R"}, {RobotType::TwoAxisRolling, "2R"},
+     {RobotType::RollingAndTurning, "RT"}, {RobotType::RollingAndSteering, "RS"}}};
+inline RobotType robotTypeFromString(const std::string& name) {
+  return enumFromName(kRobotTypeNames, name, "robot type");
+}
+inline std::string toString(RobotType type) { return enumName(kRobotTypeNames, type); }
 
 /// Drive rates [rad/s]. roll_rate is theta_dot (about l) or, for RS, alpha_dot (about the tilted
 /// axle); lateral_rate is phi_dot (about h: a sideways roll, or the RS tilt rate); turn_rate is

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "spherical_robots/core/enum_names.hpp"
 #include "spherical_robots/terrain/robot_type.hpp"
 #include "spherical_robots/terrain/surface.hpp"
 
@@ -23,8 +24,12 @@ enum class ContactModel {
 };
 
 /// "paper" | "rolling". @throw std::invalid_argument on an unknown name.
-ContactModel contactModelFromString(const std::string& name);
-std::string toString(ContactModel model);
+inline constexpr EnumNames<ContactModel, 2> kContactModelNames = {
+    {{ContactModel::Paper, "paper"}, {ContactModel::Rolling, "rolling"}}};
+inline ContactModel contactModelFromString(const std::string& name) {
+  return enumFromName(kContactModelNames, name, "contact model");
+}
+inline std::string toString(ContactModel model) { return enumName(kContactModelNames, model); }
 
 /// The configuration (x0, y0, psi, phi): contact point in the plane [m], heading psi [rad]
 /// right-handed about n relative to the tangent frame, and RS tilt phi [rad] (0 for other types).
