@@ -31,6 +31,12 @@ double positiveNumber(const ParameterSource& source, const std::string& key, dou
   return value;
 }
 
+double nonNegativeNumber(const ParameterSource& source, const std::string& key, double fallback) {
+  const double value = finiteNumber(source, key, fallback);
+  if (value < 0.0) rejectValue(source, key, value, ">= 0");
+  return value;
+}
+
 int wholeNumber(const ParameterSource& source, const std::string& key, int fallback, int minimum) {
   const double value = finiteNumber(source, key, fallback);
   if (value < minimum || value != std::floor(value) ||

@@ -20,10 +20,10 @@ PlantLoop::Defaults loopDefaults() {
   PlantLoop::Defaults defaults;
   defaults.task = "freebot plant";
   defaults.hardware_id = "FreeBOT";
-  defaults.step = 0.01;
-  defaults.pace = 1.0;
-  defaults.state_timeout = 0.1;
-  defaults.trail_period = 0.1;
+  defaults.parameters.step = 0.01;
+  defaults.parameters.speedup = 1.0;
+  defaults.parameters.state_timeout = 0.1;
+  defaults.parameters.trail_period = 0.1;
   defaults.max_trail_points = 5000;
   return defaults;
 }

@@ -11,11 +11,19 @@
 
 namespace spherical_robots {
 
+FrictionDriveControllerParameters loadFrictionDriveControllerParameters(
+    const config::ParameterSource& node) {
+  FrictionDriveControllerParameters p;
+  p.max_actuator_rate = config::positiveNumber(node, "max_actuator_rate", p.max_actuator_rate);
+  p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);
+  return p;
+}
+
 FrictionDriveControllerRos::FrictionDriveControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : actuation_(loadRollerActuation(nh)),
       last_motor_rates_(2, 0.0),
-      max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
-      input_(nh.resolveName("drive/command"), positiveParam(pnh, "input_timeout", 0.5)),
+      parameters_(loadFrictionDriveControllerParameters(RosParameterSource(pnh))),
+      input_(nh.resolveName("drive/command"), parameters_.input_timeout),
       work_([this](const sensor_msgs::JointState& msg) { convert(msg); }, step_publications_),
       updater_(nh, pnh, pnh.getNamespace()) {
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
@@ -36,7 +44,7 @@ void FrictionDriveControllerRos::convert(const sensor_msgs::JointState& msg) {
   try {
     const std::array<double, 2> motor_rates =
         actuation_.motorRates(conversions::ratesFromJointState(terrain::RobotType::TwoAxisRolling,
-                                                               msg, max_actuator_rate_));
+                                                               msg, parameters_.max_actuator_rate));
     last_motor_rates_.assign(motor_rates.begin(), motor_rates.end());
     input_.accept(workingTime(work_.participant()));
     command_pub_.publish(conversions::velocityJointState(rollerMotorNames(), last_motor_rates_, msg.header.stamp));

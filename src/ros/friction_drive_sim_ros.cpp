@@ -12,12 +12,20 @@
 
 namespace spherical_robots {
 
+FrictionDriveSimParameters loadFrictionDriveSimParameters(const config::ParameterSource& node) {
+  FrictionDriveSimParameters p;
+  p.frame_prefix = node.text("frame_prefix").value_or("");
+  p.marker_rate = config::positiveNumber(node, "marker_rate", p.marker_rate);
+  p.max_actuator_rate = config::positiveNumber(node, "max_actuator_rate", p.max_actuator_rate);
+  p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);
+  return p;
+}
+
 FrictionDriveSimRos::FrictionDriveSimRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : actuation_(loadRollerActuation(nh)),
-      heading_frame_(stringParam(pnh, "frame_prefix", "") + "heading"),
-      marker_period_(1.0 / positiveParam(pnh, "marker_rate", 20.0)),
-      max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
-      input_(nh.resolveName("actuators/state"), positiveParam(pnh, "input_timeout", 0.5)),
+      parameters_(loadFrictionDriveSimParameters(RosParameterSource(pnh))),
+      heading_frame_(parameters_.frame_prefix + "heading"),
+      input_(nh.resolveName("actuators/state"), parameters_.input_timeout),
       work_([this](const sensor_msgs::JointState& msg) { drive(msg); }, step_publications_),
       updater_(nh, pnh, pnh.getNamespace()) {
   drive_state_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "drive/state");
@@ -40,7 +48,7 @@ void FrictionDriveSimRos::drive(const sensor_msgs::JointState& msg) {
   roller::DriveState state;
   try {
     const std::vector<double> rates =
-        conversions::velocitiesByName(msg, rollerMotorNames(), max_actuator_rate_);
+        conversions::velocitiesByName(msg, rollerMotorNames(), parameters_.max_actuator_rate);
     state = actuation_.driveState({rates[0], rates[1]});
   } catch (const std::invalid_argument& e) {
     input_.reject(e.what());  // the plant keeps the last good drive state until it goes stale
@@ -54,7 +62,7 @@ void FrictionDriveSimRos::drive(const sensor_msgs::JointState& msg) {
   drive_pub_.publish(conversions::toRollerDriveMsg(state, msg.header.stamp));
 
   // On the message's time, not the clock's, so that lock-step runs publish the same markers.
-  if (periodDue(last_markers_, msg.header.stamp, marker_period_)) {
+  if (periodDue(last_markers_, msg.header.stamp, 1.0 / parameters_.marker_rate)) {
     last_markers_ = msg.header.stamp;
     marker_pub_.publish(conversions::rollerMarkers(actuation_.drive().geometry(),
                                                    actuation_.rollerRadius(), state,

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "spherical_robots/LockstepAck.h"
+#include "spherical_robots/ros/ros_parameter_source.hpp"
 #include "spherical_robots/ros/shared_message.hpp"
 
 namespace spherical_robots {
@@ -25,19 +26,11 @@ std::vector<std::string> topicsOf(const std::vector<ros::Subscriber>& subscripti
 }  // namespace
 
 std::vector<std::string> lockstepParticipants(const ros::NodeHandle& nh) {
-  XmlRpc::XmlRpcValue value;
   std::vector<std::string> names;
-  if (!nh.getParam(kParticipantsParam, value)) return names;
-  const auto bad = [&] {
-    return std::invalid_argument("parameter " + nh.resolveName(kParticipantsParam) +
-                                 " must be a list of node names, e.g. [pure_pursuit_controller, "
-                                 "hardware_interface]");
-  };
-  if (value.getType() != XmlRpc::XmlRpcValue::TypeArray) throw bad();
-  for (int i = 0; i < value.size(); ++i) {
-    if (value[i].getType() != XmlRpc::XmlRpcValue::TypeString) throw bad();
-    names.push_back(nh.resolveName(static_cast<std::string>(value[i])));
-  }
+  // A list of node names, e.g. [pure_pursuit_controller, hardware_interface]; texts() names the
+  // parameter and the value that is not one.
+  for (const std::string& name : RosParameterSource(nh).texts(kParticipantsParam).value_or(std::vector<std::string>{}))
+    names.push_back(nh.resolveName(name));
   return names;
 }
 

@@ -25,21 +25,25 @@ constexpr double kPathPeriod = 200.0 * M_PI;  // [s] eq 52 repeats after 2π / 0
 constexpr int kDesiredPathSamples = 2000;
 constexpr double kLateAge = 0.002;           // [s] two 1 ms ticks: the delay the 1 kHz loop is built for
 
-norma::EffortLimits effortLimits(const ros::NodeHandle& pnh) {
-  return {positiveParam(pnh, "max_torque", 20.0), positiveParam(pnh, "max_force", 200.0)};
-}
-
 }  // namespace
 
+NormaControllerParameters loadNormaControllerParameters(const config::ParameterSource& node) {
+  NormaControllerParameters p;
+  p.controller = config::parsedText(node, "controller", "paper", norma::controllerKindFromString);
+  p.limits.max_torque = config::positiveNumber(node, "max_torque", p.limits.max_torque);
+  p.limits.max_force = config::positiveNumber(node, "max_force", p.limits.max_force);
+  p.publish_rate = config::positiveNumber(node, "publish_rate", p.publish_rate);
+  p.max_stamp_skew = config::positiveNumber(node, "max_stamp_skew", p.max_stamp_skew);
+  p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);
+  return p;
+}
+
 NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
-    : parameters_(fromRobotDescription(nh, config::normaParametersFromUrdf)),
-      loop_(norma::NormaController(parameters_,
-                                   parsedParam(pnh, "controller", "paper", norma::controllerKindFromString)),
-            effortLimits(pnh)),
-      publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
-      max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
-      input_(nh.resolveName("norma_state"), positiveParam(pnh, "input_timeout", 0.05)),
-      actuator_input_(nh.resolveName("actuators/state"), positiveParam(pnh, "input_timeout", 0.05)),
+    : parameters_(loadNormaControllerParameters(RosParameterSource(pnh))),
+      robot_(fromRobotDescription(nh, config::normaParametersFromUrdf)),
+      loop_(norma::NormaController(robot_, parameters_.controller), parameters_.limits),
+      input_(nh.resolveName("norma_state"), parameters_.input_timeout),
+      actuator_input_(nh.resolveName("actuators/state"), parameters_.input_timeout),
       work_([this](const spherical_robots::NormaState& msg) { control(msg); }, step_publications_),
       updater_(nh, pnh, pnh.getNamespace()) {
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
@@ -84,7 +88,7 @@ void NormaControllerRos::control(const spherical_robots::NormaState& msg) {
   try {
     // The loop validates the state before it changes anything; the stamp is checked against
     // the clock first, so a state stamped in the future cannot move the path clock.
-    const std::string stamp_problem = stampProblem(now, this->now(), max_stamp_skew_);
+    const std::string stamp_problem = stampProblem(now, this->now(), parameters_.max_stamp_skew);
     if (!stamp_problem.empty()) throw std::invalid_argument("norma_state " + stamp_problem);
     output = loop_.step(now.toSec(), conversions::normaMeasurementFromMsg(msg));
   } catch (const std::invalid_argument& e) {
@@ -102,10 +106,10 @@ void NormaControllerRos::control(const spherical_robots::NormaState& msg) {
                                                       "is built for <= 2 ms (lower the speed-up)");
   }
 
-  if (periodDue(last_publish_, now, publish_period_)) {
+  if (periodDue(last_publish_, now, 1.0 / parameters_.publish_rate)) {
     last_publish_ = now;
     const norma::PathPoint reference = loop_.reference(now.toSec());
-    const double zeta = norma::kinematicLayer(controller().gains().kinematic, parameters_.R, msg.x,
+    const double zeta = norma::kinematicLayer(controller().gains().kinematic, robot_.R, msg.x,
                                               msg.y, msg.psi, reference).zeta;
     error_pub_.publish(
         conversions::toNormaTrackingErrorMsg(reference, msg.x, msg.y, output.error, zeta, now));

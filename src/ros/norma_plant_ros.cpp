@@ -19,23 +19,31 @@ PlantLoop::Defaults loopDefaults() {
   PlantLoop::Defaults defaults;
   defaults.task = "norma plant";
   defaults.hardware_id = "Norma";
-  defaults.step = 0.001;
-  defaults.pace = 1.0;
-  defaults.state_timeout = 0.05;
-  defaults.trail_period = 0.5;
+  defaults.parameters.step = 0.001;
+  defaults.parameters.speedup = 1.0;
+  defaults.parameters.state_timeout = 0.05;
+  defaults.parameters.trail_period = 0.5;
   defaults.max_trail_points = 4000;
   return defaults;
 }
 
 }  // namespace
 
+NormaPlantParameters loadNormaPlantParameters(const config::ParameterSource& node) {
+  NormaPlantParameters p;
+  p.variant = config::parsedText(node, "variant", "text", norma::lagrangianVariantFromString);
+  p.frame_prefix = node.text("frame_prefix").value_or("");
+  p.max_actuator_effort = config::positiveNumber(node, "max_actuator_effort", p.max_actuator_effort);
+  p.initial_psi = config::finiteNumber(node, "initial_psi", p.initial_psi);
+  return p;
+}
+
 NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
-    : dynamics_(fromRobotDescription(nh, config::normaParametersFromUrdf),
-                parsedParam(pnh, "variant", "text", norma::lagrangianVariantFromString)),
-      base_frame_(stringParam(pnh, "frame_prefix", "") + "base_link"),
-      max_actuator_effort_(positiveParam(pnh, "max_actuator_effort", 1e4)),
+    : parameters_(loadNormaPlantParameters(RosParameterSource(pnh))),
+      dynamics_(fromRobotDescription(nh, config::normaParametersFromUrdf), parameters_.variant),
+      base_frame_(parameters_.frame_prefix + "base_link"),
       loop_(nh, pnh, loopDefaults()) {
-  state_.psi = numberParam(pnh, "initial_psi", 0.0);
+  state_.psi = parameters_.initial_psi;
   state_pub_ = loop_.advertise<spherical_robots::NormaState>("norma_state");
   odom_pub_ = loop_.advertise<nav_msgs::Odometry>("odom");
   joint_pub_ = loop_.advertise<sensor_msgs::JointState>("joint_states");
@@ -50,7 +58,7 @@ NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 
 void NormaPlantRos::read(const sensor_msgs::JointState& actuators) {
   const std::vector<double> efforts =
-      conversions::effortsByName(actuators, conversions::normaActuatorNames(), max_actuator_effort_);
+      conversions::effortsByName(actuators, conversions::normaActuatorNames(), parameters_.max_actuator_effort);
   measured_ = {efforts[0], efforts[1]};
 }
 

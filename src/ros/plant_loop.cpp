@@ -11,23 +11,19 @@ PlantLoop::PlantLoop(ros::NodeHandle nh, ros::NodeHandle pnh, const Defaults& de
     : nh_(nh),
       pnh_(pnh),
       defaults_(defaults),
-      step_(positiveParam(pnh, "step", defaults.step)),
-      publish_period_(1.0 / positiveParam(pnh, "publish_rate", 50.0)),
-      timeline_(pnh),
-      actuator_input_(nh.resolveName("actuators/state"),
-                      positiveParam(pnh, "state_timeout", defaults.state_timeout)),
+      parameters_(config::loadPlantLoopParameters(RosParameterSource(pnh), defaults.parameters)),
+      timeline_(parameters_.duration, parameters_.max_clock_step),
+      actuator_input_(nh.resolveName("actuators/state"), parameters_.state_timeout),
       tf_(step_publications_),
       updater_(nh, pnh, pnh.getNamespace()) {
-  if (defaults.trail_period > 0.0)
-    trail_.emplace(nh, "trail", kWorldFrame,
-                   positiveParam(pnh, "trail_period", defaults.trail_period),
-                   defaults.max_trail_points);
+  if (parameters_.trail_period > 0.0)
+    trail_.emplace(nh, "trail", kWorldFrame, parameters_.trail_period, defaults.max_trail_points);
 }
 
 void PlantLoop::start(PlantModel& model, const LoopPublisher& state) {
   model_ = &model;
   actuator_sub_ = nh_.subscribe("actuators/state", kLoopQueueSize, &PlantLoop::onActuatorState, this);
-  clock_ = makePlantClock(nh_, pnh_, step_, defaults_.pace,
+  clock_ = makePlantClock(nh_, pnh_, parameters_,
                           [this](const ros::Time& now) { return tick(now); }, state.publisher(),
                           actuator_sub_);
   updater_.setHardwareID(defaults_.hardware_id);
@@ -52,7 +48,7 @@ std::vector<std::string> PlantLoop::tick(const ros::Time& now) {
   const bool fresh = actuator_input_.fresh(now);
   timeline_.tick(now, [&](double elapsed) { model_->advance(elapsed, fresh); });
   model_->publishEveryStep(now, fresh);
-  if (periodDue(last_publish_, now, publish_period_)) {
+  if (periodDue(last_publish_, now, 1.0 / parameters_.publish_rate)) {
     last_publish_ = now;
     model_->publishPeriodic(now, fresh);
   }

@@ -6,15 +6,11 @@
 #include <exception>
 
 #include "spherical_robots/ros/conversions.hpp"
-#include "spherical_robots/ros/ros_parameter_source.hpp"
 
 namespace spherical_robots {
 
 PlantTimeline::PlantTimeline(double duration, double max_clock_step)
     : timeline_(duration, max_clock_step) {}
-
-PlantTimeline::PlantTimeline(const ros::NodeHandle& pnh)
-    : PlantTimeline(numberParam(pnh, "duration", 0.0), positiveParam(pnh, "max_clock_step", kDefaultMaxClockStep)) {}
 
 void PlantTimeline::tick(const ros::Time& now, const std::function<void(double elapsed)>& advance) {
   const double last_tick = stampSeconds(timeline_.lastTick());

@@ -22,36 +22,52 @@ constexpr int kDesiredPathSamples = 400;
 
 }  // namespace
 
-PurePursuitControllerRos::Mode PurePursuitControllerRos::modeFromString(const std::string& name) {
+PurePursuitControllerParameters::Mode PurePursuitControllerParameters::modeFromString(
+    const std::string& name) {
   if (name == "tracking") return Mode::Tracking;
   if (name == "teleop") return Mode::Teleop;
   throw std::invalid_argument("unknown mode (tracking | teleop)");
 }
 
+PurePursuitControllerParameters loadPurePursuitControllerParameters(
+    const config::ParameterSource& node) {
+  using P = PurePursuitControllerParameters;
+  P p;
+  p.robot_type = config::parsedText(node, "robot_type", "3R", terrain::robotTypeFromString);
+  p.mode = config::parsedText(node, "mode", "tracking", P::modeFromString);
+  p.law = config::parsedText(node, "law", "smooth", terrain::pursuitLawFromString);
+  p.path = node.text("path").value_or(p.path);
+  p.rate = config::positiveNumber(node, "rate", p.rate);
+  p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);
+  p.max_position = config::positiveNumber(node, "max_position", p.max_position);
+  p.max_cmd_vel = config::positiveNumber(node, "max_cmd_vel", p.max_cmd_vel);
+  p.max_stamp_skew = config::positiveNumber(node, "max_stamp_skew", p.max_stamp_skew);
+  p.max_clock_step = config::positiveNumber(node, "max_clock_step", p.max_clock_step);
+  p.teleop_tilt_gain = config::positiveNumber(node, "teleop_tilt_gain", p.teleop_tilt_gain);
+  return p;
+}
+
 PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
-    : type_(parsedParam(pnh, "robot_type", "3R", terrain::robotTypeFromString)),
-      mode_(parsedParam(pnh, "mode", "tracking", modeFromString)),
+    : parameters_(loadPurePursuitControllerParameters(RosParameterSource(pnh))),
       radius_(radiusFromRobotDescription(nh)),
-      max_position_(positiveParam(pnh, "max_position", 1e3)),
-      max_cmd_vel_(positiveParam(pnh, "max_cmd_vel", 10.0)),
-      max_stamp_skew_(positiveParam(pnh, "max_stamp_skew", 1.0)),
-      clock_(positiveParam(pnh, "max_clock_step", kDefaultMaxClockStep)),
-      input_(nh.resolveName(mode_ == Mode::Tracking ? "terrain_state" : "cmd_vel"),
-             positiveParam(pnh, "input_timeout", 0.5)),
-      input_timeout_(positiveParam(pnh, "input_timeout", 0.5)),
+      clock_(parameters_.max_clock_step),
+      input_(nh.resolveName(parameters_.mode == Mode::Tracking ? "terrain_state" : "cmd_vel"),
+             parameters_.input_timeout),
       updater_(nh, pnh, pnh.getNamespace()) {
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
-  controller_ = config::makePursuitController(
-      parsedParam(pnh, "law", "smooth", terrain::pursuitLawFromString), type_, terrain_config,
-      radius_);
+  controller_ = config::makePursuitController(parameters_.law, parameters_.robot_type,
+                                              terrain_config, radius_);
 
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
   state_sub_ = nh.subscribe("terrain_state", kLoopQueueSize, &PurePursuitControllerRos::onTerrainState, this);
-  if (mode_ == Mode::Tracking) {
+  if (parameters_.mode == Mode::Tracking) {
     surface_ = config::makeSurface(terrain_config.surface);
-    path_ = parsedParam(pnh, "path", "circle", [&terrain_config](const std::string& name) {
-      return config::makePath(name, terrain_config);
-    });
+    try {
+      path_ = config::makePath(parameters_.path, terrain_config);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("parameter " + pnh.resolveName("path") + " = '" +
+                                  parameters_.path + "': " + e.what());
+    }
     tracker_ = std::make_unique<terrain::PathTracker>(*controller_, *path_, *surface_);
     error_pub_ = step_publications_.advertise<spherical_robots::TrackingError>(nh, "tracking_error");
     target_pub_ = step_publications_.advertise<geometry_msgs::PointStamped>(nh, "target");
@@ -59,19 +75,19 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
     desired_path_pub_.publish(conversions::sampledPath(*path_, *surface_, kDesiredPathSamples,
                                                        kWorldFrame, ros::Time::now()));
     ROS_INFO_STREAM("Tracking " << path_->describe() << " on " << surface_->describe() << " with a "
-                                << terrain::toString(type_) << " sphere, R = " << radius_ << " m");
+                                << terrain::toString(parameters_.robot_type) << " sphere, R = " << radius_ << " m");
   } else {
     teleop_mapping_ = std::make_unique<terrain::TeleopMapping>(
-        type_, radius_, terrain_config.tilt_limit, positiveParam(pnh, "teleop_tilt_gain", 2.0));
+        parameters_.robot_type, radius_, terrain_config.tilt_limit, parameters_.teleop_tilt_gain);
     cmd_vel_sub_ = nh.subscribe("cmd_vel", 10, &PurePursuitControllerRos::onCmdVel, this);
-    ROS_INFO_STREAM("Teleoperating a " << terrain::toString(type_) << " sphere, R = " << radius_
+    ROS_INFO_STREAM("Teleoperating a " << terrain::toString(parameters_.robot_type) << " sphere, R = " << radius_
                                        << " m, from " << input_.topic());
   }
 
-  updater_.setHardwareID(terrain::toString(type_) + " sphere");
+  updater_.setHardwareID(terrain::toString(parameters_.robot_type) + " sphere");
   updater_.add("pure pursuit controller", this, &PurePursuitControllerRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
-  const double period = 1.0 / positiveParam(pnh, "rate", 50.0);
+  const double period = 1.0 / parameters_.rate;
   if (isLockstepParticipant(nh, pnh)) {
     lockstep_ = std::make_unique<LockstepParticipant>(
         nh, pnh, std::vector<ros::Subscriber>{state_sub_}, [this, period](const ros::Time& now) {
@@ -87,21 +103,21 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
 ros::Time PurePursuitControllerRos::now() const { return workingTime(lockstep_.get()); }
 
 void PurePursuitControllerRos::onTerrainState(const spherical_robots::TerrainState& msg) {
-  if (msg.robot_type != terrain::toString(type_)) {
+  if (msg.robot_type != terrain::toString(parameters_.robot_type)) {
     input_.reject("state of a " + msg.robot_type + " robot, this controller drives a " +
-                  terrain::toString(type_));
+                  terrain::toString(parameters_.robot_type));
     return;
   }
-  const bool primary = mode_ == Mode::Tracking;
+  const bool primary = parameters_.mode == Mode::Tracking;
   // In lock-step the state is taken in at its own stamp, the step it belongs to, whatever the
   // order the transport delivered it in.
   const ros::Time now = lockstep_ ? msg.header.stamp : ros::Time::now();
   try {
     // Everything checked before anything changes: a rejected state leaves the last good one.
-    const std::string stamp_problem = stampProblem(msg.header.stamp, this->now(), max_stamp_skew_);
+    const std::string stamp_problem = stampProblem(msg.header.stamp, this->now(), parameters_.max_stamp_skew);
     if (!stamp_problem.empty()) throw std::invalid_argument("terrain_state " + stamp_problem);
     const terrain::ContactGeometry geometry =
-        conversions::contactGeometryFromMsg(msg, max_position_);
+        conversions::contactGeometryFromMsg(msg, parameters_.max_position);
     requireMagnitudeAtMost(msg.phi, M_PI, "terrain_state phi [rad]");
     geometry_ = geometry;
     tilt_ = msg.phi;
@@ -115,7 +131,7 @@ void PurePursuitControllerRos::onTerrainState(const spherical_robots::TerrainSta
 
 void PurePursuitControllerRos::onCmdVel(const geometry_msgs::Twist& msg) {
   try {
-    const conversions::PlanarTwist twist = conversions::planarTwist(msg, max_cmd_vel_);
+    const conversions::PlanarTwist twist = conversions::planarTwist(msg, parameters_.max_cmd_vel);
     request_ = twist.request;
     input_.accept(now());
     last_cmd_vel_wall_ = ros::WallTime::now();
@@ -128,7 +144,7 @@ void PurePursuitControllerRos::onCmdVel(const geometry_msgs::Twist& msg) {
 void PurePursuitControllerRos::warnIgnoredOnce(const std::vector<std::string>& fields) {
   for (const std::string& field : fields) {
     if (warned_ignored_.insert(field).second) {
-      ROS_WARN_STREAM("A " << terrain::toString(type_) << " sphere cannot follow cmd_vel " << field
+      ROS_WARN_STREAM("A " << terrain::toString(parameters_.robot_type) << " sphere cannot follow cmd_vel " << field
                            << "; ignoring it (warned once)");
     }
   }
@@ -148,7 +164,7 @@ std::vector<std::string> PurePursuitControllerRos::control(const ros::Time& now)
                                           << " s; the reference continues where it was");
   }
   try {
-    command_ = mode_ == Mode::Tracking ? track(now) : teleop();
+    command_ = parameters_.mode == Mode::Tracking ? track(now) : teleop();
   } catch (const std::exception& e) {
     ++failures_;
     command_ = terrain::DriveRates{};
@@ -156,7 +172,7 @@ std::vector<std::string> PurePursuitControllerRos::control(const ros::Time& now)
                                                                 << " failures so far), commanding zero: "
                                                                 << e.what());
   }
-  command_pub_.publish(conversions::jointStateFromRates(type_, command_, now));
+  command_pub_.publish(conversions::jointStateFromRates(parameters_.robot_type, command_, now));
   return step_publications_.take();
 }
 
@@ -175,7 +191,7 @@ terrain::DriveRates PurePursuitControllerRos::teleop() {
   // A person's command timeout counts wall time: at 10x real time, cmd_vel at 10 Hz of wall time
   // would otherwise be 1 s of simulated time apart, twice the timeout.
   if (last_cmd_vel_wall_.isZero() ||
-      (ros::WallTime::now() - last_cmd_vel_wall_).toSec() > input_timeout_)
+      (ros::WallTime::now() - last_cmd_vel_wall_).toSec() > parameters_.input_timeout)
     return {};
   const terrain::TeleopCommand command = teleop_mapping_->command(request_, tilt_);
   // Named as cmd_vel fields, which is what the operator sends.
@@ -189,9 +205,9 @@ terrain::DriveRates PurePursuitControllerRos::teleop() {
 
 void PurePursuitControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   status.summary(diagnostic_msgs::DiagnosticStatus::OK,
-                 mode_ == Mode::Tracking ? "tracking " + path_->describe() : "teleop");
-  status.add("robot type", terrain::toString(type_));
-  if (mode_ == Mode::Tracking) {
+                 parameters_.mode == Mode::Tracking ? "tracking " + path_->describe() : "teleop");
+  status.add("robot type", terrain::toString(parameters_.robot_type));
+  if (parameters_.mode == Mode::Tracking) {
     status.add("|e_t| [m]", error_.norm);
     status.add("zeta [rad]", error_.zeta);
   }

@@ -86,31 +86,6 @@ std::string RosParameterSource::origin() const { return nh_.getNamespace(); }
 
 std::string RosParameterSource::resolve(const std::string& key) const { return nh_.resolveName(key); }
 
-std::string stringParam(const ros::NodeHandle& nh, const std::string& name, const std::string& fallback) {
-  return RosParameterSource(nh).text(name).value_or(fallback);
-}
-
-double numberParam(const ros::NodeHandle& nh, const std::string& name, double fallback) {
-  return config::finiteNumber(RosParameterSource(nh), name, fallback);
-}
-
-int countParam(const ros::NodeHandle& nh, const std::string& name, int fallback, int minimum) {
-  return config::wholeNumber(RosParameterSource(nh), name, fallback, minimum);
-}
-
-double positiveParam(const ros::NodeHandle& nh, const std::string& name, double fallback) {
-  return config::positiveNumber(RosParameterSource(nh), name, fallback);
-}
-
-bool boolParam(const ros::NodeHandle& nh, const std::string& name, bool fallback) {
-  XmlRpc::XmlRpcValue value;
-  if (!nh.getParam(name, value)) return fallback;
-  if (value.getType() != XmlRpc::XmlRpcValue::TypeBoolean) {
-    throwBadType(nh.resolveName(name), value, "a boolean");
-  }
-  return static_cast<bool>(value);
-}
-
 std::string robotDescription(const ros::NodeHandle& nh) {
   const auto urdf = RosParameterSource(nh).text("robot_description");
   if (!urdf)

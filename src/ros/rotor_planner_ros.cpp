@@ -9,6 +9,7 @@
 
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/diagnostics_timer.hpp"
+#include "spherical_robots/ros/ros_parameter_source.hpp"
 #include "spherical_robots/rotor/contact_kinematics.hpp"
 #include "spherical_robots/rotor/geometric_phase.hpp"
 
@@ -25,7 +26,7 @@ constexpr double kOdomUnitTolerance = 1e-3;
 
 RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : nh_(nh),
-      params_(loadRotorPlannerParameters(nh, pnh)),
+      params_(loadRotorPlannerParameters(RosParameterSource(nh), RosParameterSource(pnh))),
       radius_(params_.executive.radius),
       executive_(params_.executive),
       odom_input_(nh.resolveName("odom"), params_.odom_timeout),

@@ -21,31 +21,39 @@ PlantLoop::Defaults loopDefaults() {
   PlantLoop::Defaults defaults;
   defaults.task = "rotor sphere plant";
   defaults.hardware_id = "rotor sphere";
-  defaults.step = 0.001;
-  defaults.pace = 1.0;
-  defaults.state_timeout = 0.5;
+  defaults.parameters.step = 0.001;
+  defaults.parameters.speedup = 1.0;
+  defaults.parameters.state_timeout = 0.5;
   return defaults;
 }
 
 }  // namespace
 
+RotorPlantParameters loadRotorPlantParameters(const config::ParameterSource& stack,
+                                              const config::ParameterSource& node) {
+  RotorPlantParameters p;
+  p.inertia_ratio = config::positiveNumber(stack, "inertia_ratio", p.inertia_ratio);
+  p.rotor_inertia_scale = config::positiveNumber(stack, "rotor_inertia_scale", p.rotor_inertia_scale);
+  p.sphere_radius = config::positiveNumber(node, "sphere_radius", p.sphere_radius);
+  p.frame_prefix = node.text("frame_prefix").value_or("");
+  p.max_actuator_rate = config::positiveNumber(node, "max_actuator_rate", p.max_actuator_rate);
+  return p;
+}
+
 RotorPlantRos::RotorPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
-    : k_(positiveParam(nh, "inertia_ratio", 2.5)),
-      inertia_scale_(positiveParam(nh, "rotor_inertia_scale", 12.0)),
-      radius_(positiveParam(pnh, "sphere_radius", 0.1)),
-      base_frame_(stringParam(pnh, "frame_prefix", "") + "base_link"),
-      max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
+    : parameters_(loadRotorPlantParameters(RosParameterSource(nh), RosParameterSource(pnh))),
+      base_frame_(parameters_.frame_prefix + "base_link"),
       loop_(nh, pnh, loopDefaults()) {
   odom_pub_ = loop_.advertise<nav_msgs::Odometry>("odom");
   joint_pub_ = loop_.advertise<sensor_msgs::JointState>("joint_states");
-  ROS_INFO_STREAM("rotor sphere: R = " << radius_ << " m, k = " << k_ << ", J_zz/J_r = "
-                                       << inertia_scale_ << "; step " << loop_.step() << " s");
+  ROS_INFO_STREAM("rotor sphere: R = " << parameters_.sphere_radius << " m, k = " << parameters_.inertia_ratio << ", J_zz/J_r = "
+                                       << parameters_.rotor_inertia_scale << "; step " << loop_.step() << " s");
   loop_.start(*this, odom_pub_);
 }
 
 void RotorPlantRos::read(const sensor_msgs::JointState& actuators) {
   const std::vector<double> velocities =
-      conversions::velocitiesByName(actuators, kRotors, max_actuator_rate_);
+      conversions::velocitiesByName(actuators, kRotors, parameters_.max_actuator_rate);
   speeds_ = {velocities[0], velocities[1]};
   // Positions only drive the URDF's joints; a state without them keeps the last ones.
   if (actuators.position.size() == actuators.name.size()) {
@@ -59,7 +67,7 @@ void RotorPlantRos::read(const sensor_msgs::JointState& actuators) {
 }
 
 void RotorPlantRos::advance(double elapsed, bool actuators_fresh) {
-  const auto next = rotor::advancePlant(k_, inertia_scale_, state_,
+  const auto next = rotor::advancePlant(parameters_.inertia_ratio, parameters_.rotor_inertia_scale, state_,
                                         actuators_fresh ? speeds_ : rotor::RotorSpeeds{}, elapsed,
                                         loop_.step());
   // Nothing non-finite is published: a step that would produce it is a failed step.
@@ -70,19 +78,19 @@ void RotorPlantRos::advance(double elapsed, bool actuators_fresh) {
 }
 
 void RotorPlantRos::publishPeriodic(const ros::Time& now, bool actuators_fresh) {
-  const Eigen::Vector3d centre(radius_ * state_.u_a, radius_ * state_.v_a, radius_);
+  const Eigen::Vector3d centre(parameters_.sphere_radius * state_.u_a, parameters_.sphere_radius * state_.v_a, parameters_.sphere_radius);
   const Eigen::Quaterniond attitude(rotor::orientation(state_.u_o, state_.v_o, state_.psi));
   const rotor::RotorSpeeds speeds = actuators_fresh ? speeds_ : rotor::RotorSpeeds{};
   Eigen::Vector3d omega = Eigen::Vector3d::Zero();
   rotor::ContactRates rates;
   try {
-    omega = rotor::rotorAngularVelocity(k_, inertia_scale_, state_, speeds);
+    omega = rotor::rotorAngularVelocity(parameters_.inertia_ratio, parameters_.rotor_inertia_scale, state_, speeds);
     rates = rotor::contactRates(state_, omega);
   } catch (const std::invalid_argument&) {
     // Counted by the loop's failed step; the pose is still worth publishing.
   }
   odom_pub_.publish(conversions::toOdometry(centre, attitude,
-                                            {radius_ * rates.u_a, radius_ * rates.v_a, 0.0}, omega,
+                                            {parameters_.sphere_radius * rates.u_a, parameters_.sphere_radius * rates.v_a, 0.0}, omega,
                                             kWorldFrame, base_frame_, now));
   loop_.tf().sendTransform(conversions::toTransform(centre, attitude, kWorldFrame, base_frame_, now));
   joint_pub_.publish(conversions::jointState(kRotors, {positions_[0], positions_[1]},
@@ -91,8 +99,8 @@ void RotorPlantRos::publishPeriodic(const ros::Time& now, bool actuators_fresh) 
 
 void RotorPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   status.summary(diagnostic_msgs::DiagnosticStatus::OK, "rolling");
-  status.add("u_a [m]", radius_ * state_.u_a);
-  status.add("v_a [m]", radius_ * state_.v_a);
+  status.add("u_a [m]", parameters_.sphere_radius * state_.u_a);
+  status.add("v_a [m]", parameters_.sphere_radius * state_.v_a);
   status.add("u_o [rad]", state_.u_o);
   status.add("v_o [rad]", state_.v_o);
   status.add("psi [rad]", state_.psi);
@@ -100,7 +108,7 @@ void RotorPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status
 
 std::string RotorPlantRos::describeState() const {
   std::ostringstream text;
-  text << "centre at (" << radius_ * state_.u_a << ", " << radius_ * state_.v_a << ") m, psi "
+  text << "centre at (" << parameters_.sphere_radius * state_.u_a << ", " << parameters_.sphere_radius * state_.v_a << ") m, psi "
        << state_.psi << " rad";
   return text.str();
 }

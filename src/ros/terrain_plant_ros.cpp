@@ -20,40 +20,53 @@ PlantLoop::Defaults loopDefaults(terrain::RobotType type) {
   PlantLoop::Defaults defaults;
   defaults.task = "terrain plant";
   defaults.hardware_id = terrain::toString(type) + " sphere";
-  defaults.step = 0.01;
-  defaults.pace = 10.0;
-  defaults.state_timeout = 0.5;
-  defaults.trail_period = 0.5;
+  defaults.parameters.step = 0.01;
+  defaults.parameters.speedup = 10.0;
+  defaults.parameters.state_timeout = 0.5;
+  defaults.parameters.trail_period = 0.5;
   defaults.max_trail_points = 2000;
   return defaults;
 }
 
 }  // namespace
 
+TerrainPlantParameters loadTerrainPlantParameters(const config::ParameterSource& node) {
+  TerrainPlantParameters p;
+  p.robot_type = config::parsedText(node, "robot_type", "3R", terrain::robotTypeFromString);
+  p.contact_model = config::parsedText(node, "contact_model", "paper", terrain::contactModelFromString);
+  p.frame_prefix = node.text("frame_prefix").value_or("");
+  p.max_actuator_rate = config::positiveNumber(node, "max_actuator_rate", p.max_actuator_rate);
+  p.initial_x = config::finiteNumber(node, "initial_x", p.initial_x);
+  p.initial_y = config::finiteNumber(node, "initial_y", p.initial_y);
+  p.initial_psi = config::finiteNumber(node, "initial_psi", p.initial_psi);
+  p.marker_half_extent = config::positiveNumber(node, "marker_half_extent", p.marker_half_extent);
+  p.marker_resolution = config::positiveNumber(node, "marker_resolution", p.marker_resolution);
+  return p;
+}
+
 TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
-    : type_(parsedParam(pnh, "robot_type", "3R", terrain::robotTypeFromString)),
-      base_frame_(stringParam(pnh, "frame_prefix", "") + "base_link"),
-      heading_frame_(stringParam(pnh, "frame_prefix", "") + "heading"),
-      max_actuator_rate_(positiveParam(pnh, "max_actuator_rate", 1000.0)),
-      loop_(nh, pnh, loopDefaults(type_)) {
+    : parameters_(loadTerrainPlantParameters(RosParameterSource(pnh))),
+      base_frame_(parameters_.frame_prefix + "base_link"),
+      heading_frame_(parameters_.frame_prefix + "heading"),
+      loop_(nh, pnh, loopDefaults(parameters_.robot_type)) {
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
   const double radius = radiusFromRobotDescription(nh);
-  const auto model = parsedParam(pnh, "contact_model", "paper", terrain::contactModelFromString);
+  const terrain::ContactModel model = parameters_.contact_model;
   surface_ = config::makeSurface(terrain_config.surface);
-  kinematics_ = std::make_unique<terrain::TerrainKinematics>(*surface_, type_, radius, model,
-                                                              terrain_config.tilt_limit);
-  state_.x = numberParam(pnh, "initial_x", 0.0);
-  state_.y = numberParam(pnh, "initial_y", 0.0);
-  state_.psi = numberParam(pnh, "initial_psi", 0.0);
+  kinematics_ = std::make_unique<terrain::TerrainKinematics>(
+      *surface_, parameters_.robot_type, radius, model, terrain_config.tilt_limit);
+  state_.x = parameters_.initial_x;
+  state_.y = parameters_.initial_y;
+  state_.psi = parameters_.initial_psi;
   orientation_ = Eigen::Quaterniond(kinematics_->geometry(state_).heading_frame);
 
   odom_pub_ = loop_.advertise<nav_msgs::Odometry>("odom");
   state_pub_ = loop_.advertise<spherical_robots::TerrainState>("terrain_state");
   marker_pub_ = nh.advertise<visualization_msgs::Marker>("terrain_marker", 1, true);
-  marker_pub_.publish(conversions::surfaceMesh(*surface_, positiveParam(pnh, "marker_half_extent", 3.0),
-                                               positiveParam(pnh, "marker_resolution", 0.1),
+  marker_pub_.publish(conversions::surfaceMesh(*surface_, parameters_.marker_half_extent,
+                                               parameters_.marker_resolution,
                                                kWorldFrame, ros::Time::now()));
-  ROS_INFO_STREAM(terrain::toString(type_) << " sphere, R = " << radius << " m, "
+  ROS_INFO_STREAM(terrain::toString(parameters_.robot_type) << " sphere, R = " << radius << " m, "
                                            << terrain::toString(model) << " contact model, on "
                                            << surface_->describe() << "; frames " << base_frame_
                                            << ", " << heading_frame_);
@@ -61,7 +74,7 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 }
 
 void TerrainPlantRos::read(const sensor_msgs::JointState& actuators) {
-  measured_ = conversions::ratesFromJointState(type_, actuators, max_actuator_rate_);
+  measured_ = conversions::ratesFromJointState(parameters_.robot_type, actuators, parameters_.max_actuator_rate);
 }
 
 terrain::DriveRates TerrainPlantRos::rates(bool actuators_fresh) const {
@@ -91,7 +104,7 @@ void TerrainPlantRos::publishPeriodic(const ros::Time& now, bool actuators_fresh
   loop_.tf().sendTransform(
       {conversions::toTransform(geometry.centre, orientation_, kWorldFrame, base_frame_, now),
        conversions::toTransform(geometry.contact_point, heading, kWorldFrame, heading_frame_, now)});
-  state_pub_.publish(conversions::toTerrainStateMsg(type_, kinematics_->model(), state_, geometry,
+  state_pub_.publish(conversions::toTerrainStateMsg(parameters_.robot_type, kinematics_->model(), state_, geometry,
                                                     kinematics_->realisedRates(state_, drive), now));
 }
 
@@ -102,7 +115,7 @@ std::optional<PlantModel::Pose> TerrainPlantRos::trailPose() const {
 
 void TerrainPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   status.summary(diagnostic_msgs::DiagnosticStatus::OK, "rolling");
-  status.add("robot type", terrain::toString(type_));
+  status.add("robot type", terrain::toString(parameters_.robot_type));
   status.add("contact model", terrain::toString(kinematics_->model()));
   status.add("x [m]", state_.x);
   status.add("y [m]", state_.y);

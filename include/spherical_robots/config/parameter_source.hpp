@@ -3,6 +3,7 @@
 // (sphere_sim, tests) and the ROS parameter server (nodes).
 
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -35,7 +36,25 @@ double finiteNumber(const ParameterSource& source, const std::string& key, doubl
 /// finiteNumber that must also be > 0; the message names the key, the value and the limit.
 double positiveNumber(const ParameterSource& source, const std::string& key, double fallback);
 
+/// finiteNumber that must also be >= 0.
+double nonNegativeNumber(const ParameterSource& source, const std::string& key, double fallback);
+
 /// finiteNumber that must also be a whole number >= minimum (and fit an int).
 int wholeNumber(const ParameterSource& source, const std::string& key, int fallback, int minimum);
+
+/// The string at key (or fallback if absent) turned into a value by parse, e.g.
+/// terrain::robotTypeFromString; parse's std::invalid_argument is rethrown naming the origin, the
+/// key and the value.
+template <typename Parse>
+auto parsedText(const ParameterSource& source, const std::string& key, const std::string& fallback,
+                Parse parse) {
+  const std::string text = source.text(key).value_or(fallback);
+  try {
+    return parse(text);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(source.origin() + ": parameter '" + key + "' = '" + text +
+                                "': " + e.what());
+  }
+}
 
 }  // namespace spherical_robots::config

@@ -14,6 +14,7 @@
 
 #include <vector>
 
+#include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/roller/roller_actuation.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/lockstep_participant.hpp"
@@ -21,10 +22,19 @@
 
 namespace spherical_robots {
 
-/// Parameters: roller/... (config/roller.yaml, the node handle's namespace), robot_description
-/// (the sphere's radius), ~input_timeout [s] (0.5). Subscribes drive/command (JointState theta,
-/// phi [rad/s]); publishes actuators/command (roller_1, roller_2 [rad/s]) once per good command,
-/// and nothing for a bad one, so the hardware interface's watchdog sees a silent controller.
+/// The private parameters of friction_drive_controller (the drive itself is the stack's
+/// roller/... and robot_description: loadRollerActuation; docs/nodes.md).
+struct FrictionDriveControllerParameters {
+  double max_actuator_rate = 1000.0;  ///< [rad/s] a commanded rate beyond it is rejected
+  double input_timeout = 0.5;         ///< [s] an older drive command is stale
+};
+
+/// @throw std::invalid_argument naming the parameter, its value and its limit.
+FrictionDriveControllerParameters loadFrictionDriveControllerParameters(
+    const config::ParameterSource& node);
+
+/// Turns each good drive command (2R rates) into roller motor rates; nothing for a bad one, so
+/// the hardware interface's watchdog sees a silent controller (docs/nodes.md).
 class FrictionDriveControllerRos {
  public:
   /// @throw std::invalid_argument on a bad parameter, URDF or drive geometry.
@@ -37,7 +47,7 @@ class FrictionDriveControllerRos {
 
   roller::RollerActuation actuation_;
   std::vector<double> last_motor_rates_;
-  double max_actuator_rate_;  ///< [rad/s] a rate beyond it is rejected (plausibility)
+  FrictionDriveControllerParameters parameters_;
   InputMonitor input_;
   StepPublications step_publications_;
   MessageDrivenWork<sensor_msgs::JointState> work_;

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/roller/roller_actuation.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/lockstep_participant.hpp"
@@ -21,11 +22,20 @@
 
 namespace spherical_robots {
 
-/// Parameters: as friction_drive_controller (roller/..., robot_description, ~input_timeout), plus ~frame_prefix ("") and ~marker_rate [Hz] (20).
-/// Subscribes actuators/state (roller_1, roller_2 measured [rad/s]); publishes, for each good
-/// state, drive/state (JointState theta, phi [rad/s], the horizontal part of eq 11's ω) and
-/// roller_drive (spherical_robots/RollerDrive: ω, slip), and roller_markers
-/// (visualization_msgs/MarkerArray in <prefix>heading: rollers and slip arrows).
+/// The private parameters of friction_drive_sim (the drive itself is the stack's roller/... and
+/// robot_description: loadRollerActuation; docs/nodes.md).
+struct FrictionDriveSimParameters {
+  std::string frame_prefix;           ///< of the markers' heading frame
+  double marker_rate = 20.0;          ///< [Hz] of roller_markers
+  double max_actuator_rate = 1000.0;  ///< [rad/s] a measured rate beyond it is rejected
+  double input_timeout = 0.5;         ///< [s] an older actuator state is stale
+};
+
+/// @throw std::invalid_argument naming the parameter, its value and its limit.
+FrictionDriveSimParameters loadFrictionDriveSimParameters(const config::ParameterSource& node);
+
+/// Turns each good measured motor state into the sphere's angular velocity (with slip) for the
+/// plant, and shows the slip (docs/nodes.md, "friction_drive_sim").
 class FrictionDriveSimRos {
  public:
   /// @throw std::invalid_argument on a bad parameter, URDF or drive geometry.
@@ -37,9 +47,8 @@ class FrictionDriveSimRos {
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   roller::RollerActuation actuation_;
+  FrictionDriveSimParameters parameters_;
   std::string heading_frame_;
-  double marker_period_;
-  double max_actuator_rate_;  ///< [rad/s] a measured rate beyond it is rejected (plausibility)
   ros::Time last_markers_;
   roller::DriveState last_state_;
   InputMonitor input_;

@@ -11,6 +11,7 @@
 #include "spherical_robots/NormaState.h"
 #include <sensor_msgs/JointState.h>
 
+#include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/norma/norma_control_loop.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/lockstep_participant.hpp"
@@ -18,22 +19,24 @@
 
 namespace spherical_robots {
 
-/// Parameters (private, ~): controller (paper | tracking, "paper"); input_timeout [s] (0.05);
-/// publish_rate [Hz] (50) of tracking_error and target; max_torque [N m] (20) and max_force [N]
-/// (200), the actuators' limits (as given to the hardware interface) for the anti-windup;
-/// max_stamp_skew [s] (1): a state stamped further from the clock, or at 0, is rejected. In the
-/// node handle's namespace: robot_description (urdf/norma.urdf).
-/// Subscribes norma_state; for each good one, the loop of norma::NormaControlLoop (path of eq 52
-/// timed from the first state, PID integrals advanced by the time between states, held while
-/// saturated or while the actuators apply nothing: e-stop, watchdog) publishes
-/// actuators/command (effort[] of pendulum_motor [N m] and slider_motor [N]). Subscribes
-/// actuators/state for the applied efforts. Publishes tracking_error, target,
-/// desired_path (latched, one period of eq 52) and /diagnostics. A bad state is rejected and
-/// changes nothing (nothing is commanded for it; the hardware's watchdog catches a silent
-/// controller).
-/// The loop is real time: nothing waits for the controller. /diagnostics reports how old each
-/// state is (in ROS time) when its command leaves, and warns about commands later than 2 ms —
-/// the paper's inner loop does not survive much more delay (docs/conventions.md).
+/// Every private parameter of norma_controller (docs/nodes.md).
+struct NormaControllerParameters {
+  norma::ControllerKind controller = norma::ControllerKind::kPaper;
+  /// The actuators' limits (as the hardware interface has them), for the anti-windup.
+  norma::EffortLimits limits;
+  double publish_rate = 50.0;   ///< [Hz] of tracking_error and target
+  double max_stamp_skew = 1.0;  ///< [s] a state stamped further from the clock is rejected
+  double input_timeout = 0.05;  ///< [s] older states and actuator states are stale
+};
+
+/// @throw std::invalid_argument naming the parameter, its value and its limit.
+NormaControllerParameters loadNormaControllerParameters(const config::ParameterSource& node);
+
+/// Norma's two-layer controller in a stack (eqs 48-51 and the PID cascade of Fig. 5, or this
+/// project's tracking controller) on the plant's state, commanding the pendulum torque and the
+/// slider force (docs/nodes.md, "norma_controller"). The loop is real time: nothing waits for the
+/// controller, and /diagnostics warns about commands later than 2 ms, which the paper's inner
+/// loop does not survive (docs/conventions.md).
 class NormaControllerRos {
  public:
   /// @throw std::invalid_argument on a bad parameter or URDF.
@@ -49,10 +52,9 @@ class NormaControllerRos {
   const norma::NormaController& controller() const { return loop_.controller(); }
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
-  norma::NormaParameters parameters_;
+  NormaControllerParameters parameters_;
+  norma::NormaParameters robot_;
   norma::NormaControlLoop loop_;
-  double publish_period_;
-  double max_stamp_skew_;
   ros::Time last_publish_;
   double max_state_age_ = 0.0;         ///< [s] since the last report: ROS time a state waited
   unsigned long late_commands_ = 0;    ///< commands sent more than kLateAge after their state

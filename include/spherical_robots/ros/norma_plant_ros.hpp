@@ -6,21 +6,25 @@
 #include <optional>
 #include <string>
 
+#include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/norma/norma_plant.hpp"
 #include "spherical_robots/ros/plant_loop.hpp"
 
 namespace spherical_robots {
 
-/// Parameters (private, ~): variant (text | appendix, "text": docs/errata.md); frame_prefix ("");
-/// step [s] (0.001): the tick and the RK4 step; publish_rate [Hz] (50): odom, joint_states, tf;
-/// trail_period [s] (0.5); clock ("ros"), speedup (free: 1),
-/// lockstep_timeout, wait_for_subscribers, start_timeout: as terrain_plant; duration [s] (0 = forever); state_timeout [s]
-/// (0.05): older measured efforts count as zero; initial_psi [rad] (0).
-/// In the node handle's namespace: robot_description (urdf/norma.urdf: masses and lengths).
-/// Subscribes actuators/state (efforts of pendulum_motor [N m] and slider_motor [N]). Publishes
-/// norma_state (every tick), odom, joint_states (tilt_joint φ, shell_joint θ, pendulum_joint α,
-/// slider_joint δ of urdf/norma.urdf),
-/// tf world -> <prefix>base_link (centre, heading), trail and /diagnostics.
+/// Every private parameter of norma_plant but its loop's (PlantLoop; docs/nodes.md).
+struct NormaPlantParameters {
+  norma::LagrangianVariant variant = norma::LagrangianVariant::kText;  ///< docs/errata.md
+  std::string frame_prefix;             ///< of every tf frame but world
+  double max_actuator_effort = 1e4;     ///< [N m or N] a measured effort beyond it is rejected
+  double initial_psi = 0.0;             ///< [rad] the initial heading
+};
+
+/// @throw std::invalid_argument naming the parameter, its value and its limit.
+NormaPlantParameters loadNormaPlantParameters(const config::ParameterSource& node);
+
+/// Norma (robot_description: urdf/norma.urdf) integrated from the measured pendulum torque and
+/// slider force (docs/nodes.md, "norma_plant").
 class NormaPlantRos : private PlantModel {
  public:
   /// @throw std::invalid_argument on a bad parameter or URDF.
@@ -35,9 +39,9 @@ class NormaPlantRos : private PlantModel {
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) override;
   std::string describeState() const override;
 
+  NormaPlantParameters parameters_;
   norma::NormaDynamics dynamics_;
   std::string base_frame_;
-  double max_actuator_effort_;  ///< [N m or N] a measured effort beyond it is rejected
   norma::NormaState state_;
   norma::Efforts measured_;  ///< the last good actuator state's efforts
   LoopPublisher state_pub_;

@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "spherical_robots/config/plant_loop_parameters.hpp"
+
 namespace spherical_robots {
 
 class PlantClock {
@@ -50,17 +52,13 @@ class PlantClock {
 /// ROS time jumped back (a replayed or restarted clock).
 bool periodDue(const ros::Time& last, const ros::Time& now, double period);
 
-/// A plant's clock from its private parameters (pnh): clock (lockstep | free | ros, "ros");
-/// speedup [-] (lockstep: a cap on the pace, 0 = as fast as the participants allow, default 0;
-/// free: the pace, default `default_pace`); lockstep_timeout [s] (2, with a leader 1; wall time:
-/// a silent participant is dropped); lockstep_leader ("": this plant owns /clock; else the
-/// absolute namespace of the stack whose plant does, whose barrier this plant joins);
-/// start_timeout [s] (10); wait_for_subscribers (1). The participants are
-/// <ns>/lockstep/participants. Time starts once wait_for_subscribers nodes read `state`,
-/// something publishes on `actuators` and every listed participant has joined, or after
-/// start_timeout with a warning. @throw std::invalid_argument on a bad parameter, naming it.
+/// The clock `parameters` choose for the plant whose private handle is pnh (its namespace names
+/// it in lock-step). The participants are <ns>/lockstep/participants. Time starts once
+/// wait_for_subscribers nodes read `state`, something publishes on `actuators` and every listed
+/// participant has joined, or after start_timeout with a warning.
+/// @throw std::invalid_argument on a bad participants list, naming it.
 std::unique_ptr<PlantClock> makePlantClock(ros::NodeHandle nh, const ros::NodeHandle& pnh,
-                                           double step, double default_pace,
+                                           const config::PlantLoopParameters& parameters,
                                            PlantClock::Tick tick, const ros::Publisher& state,
                                            const ros::Subscriber& actuators);
 

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "spherical_robots/config/plant_loop_parameters.hpp"
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/loop_publishers.hpp"
@@ -53,22 +54,16 @@ class PlantModel {
 
 class PlantLoop {
  public:
-  /// Per plant defaults of the loop's parameters.
+  /// What each plant sets: its diagnostics and its defaults of the loop's parameters.
   struct Defaults {
     std::string task;         ///< the diagnostics task, e.g. "norma plant"
     std::string hardware_id;  ///< e.g. "Norma"
-    double step;       ///< [s] the tick and the integration step
-    double pace;       ///< speedup of the free clock
-    double state_timeout;  ///< [s]
-    double trail_period = 0.0;  ///< [s]; 0: the plant has no trail
+    config::PlantLoopParameters parameters;  ///< step, state_timeout, trail_period, free pace
     std::size_t max_trail_points = 0;
   };
 
-  /// Reads the private parameters (pnh): step [s], publish_rate [Hz] (50): what
-  /// publishPeriodic() sends; state_timeout [s]: older actuator states count as stale; trail_period
-  /// [s]; duration [s] (0 = forever) and max_clock_step [s] (5) (PlantTimeline); clock, speedup,
-  /// lockstep_timeout, wait_for_subscribers, start_timeout (makePlantClock). Nothing runs before
-  /// start(). @throw std::invalid_argument on a bad parameter, naming it.
+  /// Reads the private parameters (pnh) with config::loadPlantLoopParameters. Nothing runs
+  /// before start(). @throw std::invalid_argument on a bad parameter, naming it.
   PlantLoop(ros::NodeHandle nh, ros::NodeHandle pnh, const Defaults& defaults);
 
   /// A loop topic (relative to the node handle) whose publications lock-step passes on.
@@ -77,7 +72,7 @@ class PlantLoop {
     return step_publications_.advertise<Message>(nh_, topic);
   }
   const TfPublisher& tf() const { return tf_; }
-  double step() const { return step_; }
+  double step() const { return parameters_.step; }
   /// Subscribes actuators/state (relative to the node handle), adds the model's diagnostics and
   /// starts the clock; `state` is the topic whose subscribers time waits for (wait_for_subscribers).
   void start(PlantModel& model, const LoopPublisher& state);
@@ -90,8 +85,7 @@ class PlantLoop {
   ros::NodeHandle nh_;
   ros::NodeHandle pnh_;
   Defaults defaults_;
-  double step_;
-  double publish_period_;
+  config::PlantLoopParameters parameters_;
   PlantTimeline timeline_;
   InputMonitor actuator_input_;
   StepPublications step_publications_;

@@ -8,7 +8,6 @@
 // runs that replay a stack share); this class adds the logs, the failure count and diagnostics.
 
 #include <diagnostic_updater/DiagnosticStatusWrapper.h>
-#include <ros/node_handle.h>
 #include <ros/time.h>
 
 #include <functional>
@@ -22,9 +21,6 @@ class PlantTimeline {
   /// @param duration [s] of ROS time after the first tick; 0 (or less): forever.
   /// @param max_clock_step [s] > 0: a longer forward step of ROS time is a jump, not elapsed time.
   PlantTimeline(double duration, double max_clock_step);
-  /// From the plant's private parameters duration [s] (0) and max_clock_step [s] (5).
-  /// @throw std::invalid_argument on a bad value, naming the parameter.
-  explicit PlantTimeline(const ros::NodeHandle& pnh);
 
   /// Calls advance(elapsed [s]) when ROS time moved forward since the previous tick (not on the
   /// first); logs a jump back, and an exception from advance, at most once a second.

@@ -12,10 +12,12 @@
 #include <string>
 
 #include "spherical_robots/TerrainState.h"
+#include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/ros/terrain_conversions.hpp"
 #include "spherical_robots/core/clock_jump.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/terrain/path_tracker.hpp"
+#include "spherical_robots/terrain/pursuit_law.hpp"
 #include "spherical_robots/terrain/pure_pursuit.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/surface.hpp"
@@ -26,34 +28,40 @@
 
 namespace spherical_robots {
 
-/// Parameters (private, ~): robot_type (3R | 2R | RT | RS, "3R"); mode (tracking | teleop,
-/// "tracking"); path (circle | diamond, "circle"); rate [Hz] (50); input_timeout [s] (0.5): an
-/// older terrain_state (ROS time) or cmd_vel (wall time: a person's commands, at any pace of
-/// simulated time) counts as absent and the command is zero; plausibility bounds
-/// max_position [m] (1000) of terrain_state's points, max_cmd_vel [m/s, rad/s] (10) of each
-/// cmd_vel field, max_stamp_skew [s] (1) between a terrain_state's stamp and the clock (and a
-/// zero stamp) beyond which the message is rejected; max_clock_step [s] (5): a longer step of
-/// ROS time is a jump, over which the reference does not move.
-/// In the node handle's namespace: robot_description (URDF, for the radius) and terrain/...
-/// (config/terrain.yaml: surface, paths, gains).
-///
-/// tracking: subscribes terrain_state; every 1/rate s of ROS time it commands the ~law
-/// (smooth | paper, "smooth": terrain::PursuitLaw) towards liftOntoSurface(path, surface, t,
-/// the law's window), t = ROS time since the first
-/// fresh terrain_state (so the reference waits for the plant), and publishes tracking_error,
-/// target and (latched, once) desired_path.
-/// teleop: subscribes cmd_vel (geometry_msgs/Twist), mapped by terrain::TeleopMapping (RS servos
-/// its tilt, read from terrain_state, with ~teleop_tilt_gain [1/s], default 2); what the robot
-/// type cannot follow is ignored with one warning per field.
-/// Both publish actuators/command (sensor_msgs/JointState set-points) and /diagnostics.
+/// Every private parameter of pure_pursuit_controller (docs/nodes.md); the surface, paths and
+/// gains are the stack's terrain/... (config/terrain.yaml).
+struct PurePursuitControllerParameters {
+  enum class Mode { Tracking, Teleop };
+  /// @throw std::invalid_argument unless name is tracking or teleop.
+  static Mode modeFromString(const std::string& name);
+
+  terrain::RobotType robot_type = terrain::RobotType::ThreeAxisRolling;
+  Mode mode = Mode::Tracking;
+  terrain::PursuitLaw law = terrain::PursuitLaw::Smooth;
+  std::string path = "circle";     ///< a path of config/terrain.yaml (tracking)
+  double rate = 50.0;              ///< [Hz] of actuators/command
+  /// [s] an older terrain_state (ROS time) or cmd_vel (wall time) is stale: the command is zero.
+  double input_timeout = 0.5;
+  double max_position = 1e3;       ///< [m] a terrain_state point beyond it is rejected
+  double max_cmd_vel = 10.0;       ///< [m/s, rad/s] a cmd_vel field beyond it is rejected
+  double max_stamp_skew = 1.0;     ///< [s] a terrain_state stamped further from the clock is rejected
+  double max_clock_step = kDefaultMaxClockStep;  ///< [s] a longer step of ROS time is a jump
+  double teleop_tilt_gain = 2.0;   ///< [1/s] RS in teleop: the tilt servo's gain
+};
+
+/// @throw std::invalid_argument naming the parameter, its value and its limit.
+PurePursuitControllerParameters loadPurePursuitControllerParameters(
+    const config::ParameterSource& node);
+
+/// The terrain stack's controller: tracks a path of config/terrain.yaml with a pursuit law, or
+/// maps a person's cmd_vel onto the robot type's drive (docs/nodes.md, "pure_pursuit_controller").
 class PurePursuitControllerRos {
  public:
   /// @throw std::invalid_argument on a bad parameter, URDF or terrain configuration.
   PurePursuitControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh);
 
  private:
-  enum class Mode { Tracking, Teleop };
-  static Mode modeFromString(const std::string& name);
+  using Mode = PurePursuitControllerParameters::Mode;
 
   void onTerrainState(const spherical_robots::TerrainState& msg);
   void onCmdVel(const geometry_msgs::Twist& msg);
@@ -70,8 +78,7 @@ class PurePursuitControllerRos {
   void warnIgnoredOnce(const std::vector<std::string>& fields);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
-  terrain::RobotType type_;
-  Mode mode_;
+  PurePursuitControllerParameters parameters_;
   double radius_;
   std::unique_ptr<terrain::Surface> surface_;
   std::unique_ptr<terrain::ReferencePath> path_;
@@ -86,13 +93,9 @@ class PurePursuitControllerRos {
   terrain::DriveRates command_;
   terrain::TrackingError error_;
   unsigned long failures_ = 0;
-  double max_position_;
-  double max_cmd_vel_;
-  double max_stamp_skew_;
   ClockJumpDetector clock_;
 
   InputMonitor input_;  ///< terrain_state (tracking) or cmd_vel (teleop)
-  double input_timeout_;            ///< [s]
   ros::WallTime last_cmd_vel_wall_;  ///< arrival of the last good cmd_vel
   ros::Subscriber state_sub_;
   ros::Subscriber cmd_vel_sub_;

@@ -32,30 +32,6 @@ class RosParameterSource final : public config::ParameterSource {
   ros::NodeHandle nh_;
 };
 
-/// Typed parameter helpers for node set-up. Each returns the fallback when the parameter is absent
-/// and throws std::invalid_argument naming the resolved parameter and its value when it is bad.
-std::string stringParam(const ros::NodeHandle& nh, const std::string& name, const std::string& fallback);
-/// A finite number.
-double numberParam(const ros::NodeHandle& nh, const std::string& name, double fallback);
-/// A finite number > 0.
-double positiveParam(const ros::NodeHandle& nh, const std::string& name, double fallback);
-bool boolParam(const ros::NodeHandle& nh, const std::string& name, bool fallback);
-/// A whole number >= minimum.
-int countParam(const ros::NodeHandle& nh, const std::string& name, int fallback, int minimum);
-
-/// String parameter `name` (or the fallback text) turned into a value by parse, e.g.
-/// terrain::robotTypeFromString; parse's std::invalid_argument is rethrown naming the parameter.
-template <typename Parse>
-auto parsedParam(const ros::NodeHandle& nh, const std::string& name, const std::string& fallback,
-                 Parse parse) {
-  const std::string text = stringParam(nh, name, fallback);
-  try {
-    return parse(text);
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument("parameter " + nh.resolveName(name) + " = '" + text + "': " + e.what());
-  }
-}
-
 /// The URDF in parameter `robot_description` of nh. @throw std::invalid_argument if it is not set.
 std::string robotDescription(const ros::NodeHandle& nh);
 

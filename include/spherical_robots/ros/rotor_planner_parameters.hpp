@@ -2,11 +2,10 @@
 // Every parameter of the rotor_planner node, loaded and checked in one place (docs/nodes.md,
 // "rotor_planner", has the table: name, default, meaning).
 
-#include <ros/node_handle.h>
-
 #include <optional>
 #include <string>
 
+#include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/rotor/manoeuvre_executive.hpp"
 
 namespace spherical_robots {
@@ -35,10 +34,9 @@ struct RotorPlannerParameters {
   rotor::ManoeuvreExecutive::Parameters executive;  ///< radius: ~sphere_radius
 };
 
-/// Reads the node's private parameters from pnh and the robot's (rotor_inertia_scale,
-/// inertia_ratio) from nh. @throw std::invalid_argument naming the parameter, its value and its
-/// limit.
-RotorPlannerParameters loadRotorPlannerParameters(const ros::NodeHandle& nh,
-                                                  const ros::NodeHandle& pnh);
+/// stack: the stack's namespace (the robot's rotor_inertia_scale, inertia_ratio); node: the
+/// private one. @throw std::invalid_argument naming the parameter, its value and its limit.
+RotorPlannerParameters loadRotorPlannerParameters(const config::ParameterSource& stack,
+                                                  const config::ParameterSource& node);
 
 }  // namespace spherical_robots

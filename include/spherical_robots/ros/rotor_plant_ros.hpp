@@ -6,25 +6,29 @@
 #include <array>
 #include <string>
 
+#include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/ros/plant_loop.hpp"
 #include "spherical_robots/rotor/contact_kinematics.hpp"
 #include "spherical_robots/rotor/dynamic_realizability.hpp"
 
 namespace spherical_robots {
 
-/// Parameters in the node handle's namespace (shared with rotor_planner): inertia_ratio k (2.5,
-/// > 0), rotor_inertia_scale J_zz / J_r (12).
-/// Private (~): sphere_radius R [m] (0.1); frame_prefix (""); step [s] (0.001): the tick and
-/// the RK4 step; publish_rate [Hz] (50): odom, joint_states, tf; clock ("ros"),
-/// speedup (free: 1), lockstep_timeout, wait_for_subscribers, start_timeout: as terrain_plant; duration [s] (0 = forever); state_timeout [s]
-/// (0.5): the rotors keep the last measured speeds (a late state message does not stop them:
-/// the flywheels spin on); older ones count as zero, as the hardware interface's command_timeout
-/// brings the rotors to rest.
-/// Subscribes actuators/state (velocities of rotor_1 about the sphere's x axis n1 and rotor_2
-/// about n2 [rad/s], and their positions). Publishes odom (frame world, child <prefix>base_link:
-/// the centre (R u_a, R v_a, R) and orientation R_zᵀ(ψ) R_xᵀ(v_o) R_yᵀ(u_o) of eq 2), tf
-/// world -> <prefix>base_link, joint_states (rotor_1, rotor_2: measured positions and velocities)
-/// and /diagnostics. Starts at the zero state (contact at the south pole, at the origin, ψ = 0).
+/// Every parameter of rotor_plant but its loop's (PlantLoop; docs/nodes.md).
+struct RotorPlantParameters {
+  double inertia_ratio = 2.5;          ///< k, the stack's (shared with rotor_planner)
+  double rotor_inertia_scale = 12.0;   ///< J_zz / J_r, the stack's
+  double sphere_radius = 0.1;          ///< R [m]
+  std::string frame_prefix;            ///< of every tf frame but world
+  double max_actuator_rate = 1000.0;   ///< [rad/s] a measured rate beyond it is rejected
+};
+
+/// stack: the stack's namespace (inertia_ratio, rotor_inertia_scale); node: the private one.
+/// @throw std::invalid_argument naming the parameter, its value and its limit.
+RotorPlantParameters loadRotorPlantParameters(const config::ParameterSource& stack,
+                                              const config::ParameterSource& node);
+
+/// The two-rotor sphere rolled from the measured rotor speeds, starting at the zero state
+/// (contact at the south pole, at the origin, psi = 0) (docs/nodes.md, "rotor_plant").
 class RotorPlantRos : private PlantModel {
  public:
   /// @throw std::invalid_argument on a bad parameter.
@@ -37,11 +41,8 @@ class RotorPlantRos : private PlantModel {
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) override;
   std::string describeState() const override;
 
-  double k_;
-  double inertia_scale_;
-  double radius_;
+  RotorPlantParameters parameters_;
   std::string base_frame_;
-  double max_actuator_rate_;  ///< [rad/s] a measured rate beyond it is rejected (plausibility)
   rotor::ContactCoordinates state_;
   rotor::RotorSpeeds speeds_;  ///< measured [rad/s]
   std::array<double, 2> positions_{};  ///< measured rotor angles [rad], for the URDF joints

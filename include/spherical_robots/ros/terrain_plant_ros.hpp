@@ -1,5 +1,5 @@
 #pragma once
-// The terrain plant node: a sphere rolling over z = f(x, y), integrated from the measured
+// The terrain_plant node: a sphere rolling over z = f(x, y), integrated from the measured
 // actuator rates (terrain::stepWithHeldRates) and published as odometry, tf, state and trail.
 
 #include <Eigen/Geometry>
@@ -7,33 +7,31 @@
 #include <optional>
 #include <string>
 
+#include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/ros/plant_loop.hpp"
 #include "spherical_robots/terrain/surface.hpp"
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
 
 namespace spherical_robots {
 
-/// Parameters (private, ~):
-/// * robot_type (3R | 2R | RT | RS, "3R"), contact_model (paper | rolling, "paper");
-/// * frame_prefix (""): prepended to every frame but `world`;
-/// * step [s] (0.01): integration step; publish_rate [Hz] (50): odom, tf and terrain_state;
-/// * clock (lockstep | free | ros, "ros"), speedup (lockstep: a cap, 0 = none; free: the pace,
-///   10), lockstep_timeout [s] (2), wait_for_subscribers (1), start_timeout [s] (10): the clock
-///   mode (plant_clock.hpp, docs/lockstep.md);
-/// * duration [s] (0 = forever): at this much ROS time after the first step, log "scenario
-///   complete" and shut the node down;
-/// * state_timeout [s] (0.5): older measured rates count as zero;
-/// * max_actuator_rate [rad/s] (1000, far above every stack's actuator limit): a measured rate
-///   beyond it is no measurement (1e300 is finite) and the message is rejected;
-/// * max_clock_step [s] (5): a longer forward step of ROS time is a jump (PlantTimeline);
-/// * initial_x, initial_y [m], initial_psi [rad] (0): the initial contact point and heading;
-/// * trail_period [s] (0.5): spacing of the driven trail's points;
-/// * marker_half_extent [m] (3), marker_resolution [m] (0.1): the terrain mesh [-e, e]^2.
-/// In the node handle's namespace: robot_description (URDF; the radius is base_link's collision
-/// sphere) and terrain/... (config/terrain.yaml).
-/// Subscribes actuators/state (sensor_msgs/JointState, measured rates). Publishes odom, tf
-/// world -> <prefix>base_link (centre, shell orientation) and world -> <prefix>heading (contact
-/// point, R_L), terrain_state, trail, terrain_marker (latched) and /diagnostics.
+/// Every private parameter of terrain_plant but its loop's (PlantLoop; docs/nodes.md).
+struct TerrainPlantParameters {
+  terrain::RobotType robot_type = terrain::RobotType::ThreeAxisRolling;
+  terrain::ContactModel contact_model = terrain::ContactModel::Paper;
+  std::string frame_prefix;           ///< of every tf frame but world
+  double max_actuator_rate = 1000.0;  ///< [rad/s] a measured rate beyond it is rejected
+  double initial_x = 0.0;             ///< [m]
+  double initial_y = 0.0;             ///< [m]
+  double initial_psi = 0.0;           ///< [rad]
+  double marker_half_extent = 3.0;    ///< [m] the terrain mesh spans [-e, e]^2
+  double marker_resolution = 0.1;     ///< [m]
+};
+
+/// @throw std::invalid_argument naming the parameter, its value and its limit.
+TerrainPlantParameters loadTerrainPlantParameters(const config::ParameterSource& node);
+
+/// A sphere rolling over z = f(x, y) (config/terrain.yaml, the URDF's radius), integrated from
+/// the measured actuator rates (docs/nodes.md, "terrain_plant").
 class TerrainPlantRos : private PlantModel {
  public:
   /// @throw std::invalid_argument on a bad parameter, URDF or terrain configuration.
@@ -49,7 +47,7 @@ class TerrainPlantRos : private PlantModel {
 
   terrain::DriveRates rates(bool actuators_fresh) const;
 
-  terrain::RobotType type_;
+  TerrainPlantParameters parameters_;
   std::string base_frame_;
   std::string heading_frame_;
   std::unique_ptr<terrain::Surface> surface_;
@@ -57,7 +55,6 @@ class TerrainPlantRos : private PlantModel {
   terrain::TerrainState state_;
   Eigen::Quaterniond orientation_;  ///< shell (base_link) orientation, world <- body
   terrain::DriveRates measured_;
-  double max_actuator_rate_;
   ros::Publisher marker_pub_;
   LoopPublisher odom_pub_;
   LoopPublisher state_pub_;

@@ -1,0 +1,210 @@
+// Each node's parameter loader (and the plant loop's) read from YAML, as the nodes read them from
+// the parameter server: the defaults docs/nodes.md gives, a few overrides, and a clear error
+// naming the key, the value and the limit for each malformed parameter. No ROS master.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "expect_invalid_argument.hpp"
+#include "spherical_robots/config/plant_loop_parameters.hpp"
+#include "spherical_robots/config/yaml_parameter_source.hpp"
+#include "spherical_robots/ros/friction_drive_controller_ros.hpp"
+#include "spherical_robots/ros/friction_drive_sim_ros.hpp"
+#include "spherical_robots/ros/norma_controller_ros.hpp"
+#include "spherical_robots/ros/norma_plant_ros.hpp"
+#include "spherical_robots/ros/pure_pursuit_controller_ros.hpp"
+#include "spherical_robots/ros/rotor_planner_parameters.hpp"
+#include "spherical_robots/ros/rotor_plant_ros.hpp"
+#include "spherical_robots/ros/terrain_plant_ros.hpp"
+#include "temp_yaml.hpp"
+
+namespace config = spherical_robots::config;
+namespace sr = spherical_robots;
+using spherical_robots::test_support::TempYaml;
+
+namespace {
+
+/// load(source) of a YAML file holding text ("{}" for none).
+template <typename Load>
+auto fromYaml(const std::string& text, Load load) {
+  const TempYaml file(text);
+  return load(config::YamlParameterSource(file.path()));
+}
+
+config::PlantLoopParameters loop(const std::string& text) {
+  config::PlantLoopParameters defaults;
+  defaults.step = 0.001;
+  defaults.speedup = 10.0;
+  defaults.trail_period = 0.5;
+  return fromYaml(text, [&](const config::ParameterSource& s) {
+    return config::loadPlantLoopParameters(s, defaults);
+  });
+}
+
+}  // namespace
+
+TEST(PlantLoopParameters, DefaultsAreThePlantsAndTheDocumentedOnes) {
+  const auto p = loop("{}");
+  EXPECT_EQ(p.step, 0.001);
+  EXPECT_EQ(p.publish_rate, 50.0);
+  EXPECT_EQ(p.state_timeout, 0.5);
+  EXPECT_EQ(p.trail_period, 0.5);
+  EXPECT_EQ(p.duration, 0.0);
+  EXPECT_EQ(p.max_clock_step, 5.0);
+  EXPECT_EQ(p.clock, config::ClockMode::kRos);
+  EXPECT_EQ(p.wait_for_subscribers, 1);
+  EXPECT_EQ(p.start_timeout, 10.0);
+}
+
+TEST(PlantLoopParameters, SpeedupDependsOnTheClock) {
+  EXPECT_EQ(loop("clock: lockstep\n").speedup, 0.0);
+  EXPECT_EQ(loop("clock: free\n").speedup, 10.0);
+  EXPECT_EQ(loop("clock: free\nspeedup: 2\n").speedup, 2.0);
+  const auto lockstep = loop("clock: lockstep\nspeedup: 1\nlockstep_leader: /sphere\n");
+  EXPECT_EQ(lockstep.speedup, 1.0);
+  EXPECT_EQ(lockstep.lockstep_leader, "/sphere");
+  EXPECT_EQ(lockstep.lockstep_timeout, 1.0);  // a follower drops its own participant first
+  EXPECT_EQ(loop("clock: lockstep\n").lockstep_timeout, 2.0);
+  EXPECT_EQ(loop("step: 0.01\nduration: 20\nwait_for_subscribers: 2\n").wait_for_subscribers, 2);
+}
+
+TEST(PlantLoopParameters, MalformedParametersAreNamed) {
+  EXPECT_INVALID_ARGUMENT(loop("clock: sometimes\n"), "clock", "sometimes", "lockstep | free | ros");
+  EXPECT_INVALID_ARGUMENT(loop("step: 0\n"), "step", "> 0");
+  EXPECT_INVALID_ARGUMENT(loop("clock: free\nspeedup: 0\n"), "speedup", "> 0");
+  EXPECT_INVALID_ARGUMENT(loop("clock: lockstep\nspeedup: -1\n"), "speedup", ">= 0");
+  EXPECT_INVALID_ARGUMENT(loop("clock: lockstep\nlockstep_leader: sphere\n"), "lockstep_leader",
+                          "absolute namespace");
+  EXPECT_INVALID_ARGUMENT(loop("wait_for_subscribers: 1.5\n"), "wait_for_subscribers", "1.5",
+                          "integer >= 0");
+  EXPECT_INVALID_ARGUMENT(loop("duration: .nan\n"), "duration", "finite");
+  EXPECT_INVALID_ARGUMENT(loop("publish_rate: fast\n"), "publish_rate", "number");
+}
+
+TEST(TerrainPlantParameters, DefaultsOverridesAndErrors) {
+  const auto p = fromYaml("{}", sr::loadTerrainPlantParameters);
+  EXPECT_EQ(p.robot_type, sr::terrain::RobotType::ThreeAxisRolling);
+  EXPECT_EQ(p.contact_model, sr::terrain::ContactModel::Paper);
+  EXPECT_EQ(p.frame_prefix, "");
+  EXPECT_EQ(p.max_actuator_rate, 1000.0);
+  EXPECT_EQ(p.marker_half_extent, 3.0);
+  EXPECT_EQ(p.marker_resolution, 0.1);
+  const auto q = fromYaml("robot_type: RS\ncontact_model: rolling\nframe_prefix: a/\ninitial_x: -1\n",
+                          sr::loadTerrainPlantParameters);
+  EXPECT_EQ(q.robot_type, sr::terrain::RobotType::RollingAndSteering);
+  EXPECT_EQ(q.contact_model, sr::terrain::ContactModel::Rolling);
+  EXPECT_EQ(q.frame_prefix, "a/");
+  EXPECT_EQ(q.initial_x, -1.0);
+  EXPECT_INVALID_ARGUMENT(fromYaml("robot_type: 4R\n", sr::loadTerrainPlantParameters),
+                          "robot_type", "4R");
+  EXPECT_INVALID_ARGUMENT(fromYaml("marker_resolution: 0\n", sr::loadTerrainPlantParameters),
+                          "marker_resolution", "> 0");
+  EXPECT_INVALID_ARGUMENT(fromYaml("initial_psi: .inf\n", sr::loadTerrainPlantParameters),
+                          "initial_psi", "finite");
+}
+
+TEST(PurePursuitControllerParameters, DefaultsOverridesAndErrors) {
+  using P = sr::PurePursuitControllerParameters;
+  const auto p = fromYaml("{}", sr::loadPurePursuitControllerParameters);
+  EXPECT_EQ(p.mode, P::Mode::Tracking);
+  EXPECT_EQ(p.law, sr::terrain::PursuitLaw::Smooth);
+  EXPECT_EQ(p.path, "circle");
+  EXPECT_EQ(p.rate, 50.0);
+  EXPECT_EQ(p.input_timeout, 0.5);
+  EXPECT_EQ(p.max_position, 1e3);
+  EXPECT_EQ(p.max_cmd_vel, 10.0);
+  EXPECT_EQ(p.max_stamp_skew, 1.0);
+  EXPECT_EQ(p.max_clock_step, 5.0);
+  EXPECT_EQ(p.teleop_tilt_gain, 2.0);
+  const auto q = fromYaml("mode: teleop\nlaw: paper\nrobot_type: 2R\nrate: 100\n",
+                          sr::loadPurePursuitControllerParameters);
+  EXPECT_EQ(q.mode, P::Mode::Teleop);
+  EXPECT_EQ(q.law, sr::terrain::PursuitLaw::Paper);
+  EXPECT_EQ(q.robot_type, sr::terrain::RobotType::TwoAxisRolling);
+  EXPECT_EQ(q.rate, 100.0);
+  EXPECT_INVALID_ARGUMENT(fromYaml("mode: drive\n", sr::loadPurePursuitControllerParameters),
+                          "mode", "drive", "tracking | teleop");
+  EXPECT_INVALID_ARGUMENT(fromYaml("law: fast\n", sr::loadPurePursuitControllerParameters),
+                          "law", "fast");
+  EXPECT_INVALID_ARGUMENT(fromYaml("input_timeout: -1\n", sr::loadPurePursuitControllerParameters),
+                          "input_timeout", "-1", "> 0");
+}
+
+TEST(NormaParameters, DefaultsOverridesAndErrors) {
+  const auto plant = fromYaml("{}", sr::loadNormaPlantParameters);
+  EXPECT_EQ(plant.variant, sr::norma::LagrangianVariant::kText);
+  EXPECT_EQ(plant.max_actuator_effort, 1e4);
+  EXPECT_EQ(plant.initial_psi, 0.0);
+  EXPECT_EQ(fromYaml("variant: appendix\n", sr::loadNormaPlantParameters).variant,
+            sr::norma::LagrangianVariant::kAppendix);
+  EXPECT_INVALID_ARGUMENT(fromYaml("variant: text2\n", sr::loadNormaPlantParameters), "variant",
+                          "text2");
+  const auto controller = fromYaml("{}", sr::loadNormaControllerParameters);
+  EXPECT_EQ(controller.controller, sr::norma::ControllerKind::kPaper);
+  EXPECT_EQ(controller.limits.max_torque, 20.0);
+  EXPECT_EQ(controller.limits.max_force, 200.0);
+  EXPECT_EQ(controller.publish_rate, 50.0);
+  EXPECT_EQ(controller.max_stamp_skew, 1.0);
+  EXPECT_EQ(controller.input_timeout, 0.05);
+  const auto tracking =
+      fromYaml("controller: tracking\nmax_torque: 5\n", sr::loadNormaControllerParameters);
+  EXPECT_EQ(tracking.controller, sr::norma::ControllerKind::kTracking);
+  EXPECT_EQ(tracking.limits.max_torque, 5.0);
+  EXPECT_INVALID_ARGUMENT(fromYaml("max_force: 0\n", sr::loadNormaControllerParameters),
+                          "max_force", "> 0");
+  EXPECT_INVALID_ARGUMENT(fromYaml("controller: pid\n", sr::loadNormaControllerParameters),
+                          "controller", "pid");
+}
+
+TEST(RotorParameters, DefaultsOverridesAndErrors) {
+  const TempYaml stack("inertia_ratio: 3\n");
+  const TempYaml node("{}\n");
+  const config::YamlParameterSource stack_source(stack.path()), node_source(node.path());
+  const auto plant = sr::loadRotorPlantParameters(stack_source, node_source);
+  EXPECT_EQ(plant.inertia_ratio, 3.0);
+  EXPECT_EQ(plant.rotor_inertia_scale, 12.0);
+  EXPECT_EQ(plant.sphere_radius, 0.1);
+  const auto planner = sr::loadRotorPlannerParameters(stack_source, node_source);
+  ASSERT_TRUE(planner.robot_inertia_ratio);
+  EXPECT_EQ(*planner.robot_inertia_ratio, 3.0);
+  EXPECT_FALSE(planner.manoeuvre);
+  EXPECT_EQ(planner.max_radius, 0.7 * planner.executive.radius);  // 0.7 R
+  const TempYaml manoeuvre("manoeuvre: {k: 2.5, steps: 3}\nmax_rotor_speed: 25\n");
+  const auto executing =
+      sr::loadRotorPlannerParameters(node_source, config::YamlParameterSource(manoeuvre.path()));
+  ASSERT_TRUE(executing.manoeuvre);
+  EXPECT_EQ(executing.manoeuvre->steps, 3);
+  EXPECT_EQ(executing.executive.max_rotor_speed, 25.0);
+  EXPECT_FALSE(executing.robot_inertia_ratio);
+  const auto planner_with = [&](const std::string& text) {
+    return fromYaml(text, [&](const config::ParameterSource& s) {
+      return sr::loadRotorPlannerParameters(node_source, s);
+    });
+  };
+  EXPECT_INVALID_ARGUMENT(planner_with("max_radius: 0.08\n"), "max_radius", "0.08", "R / sqrt(2)");
+  EXPECT_INVALID_ARGUMENT(planner_with("ramp_time: -1\n"), "ramp_time", ">= 0");
+  EXPECT_INVALID_ARGUMENT(planner_with("manoeuvre: {steps: 0}\n"), "manoeuvre/steps", "integer >= 1");
+  EXPECT_INVALID_ARGUMENT(fromYaml("rotor_inertia_scale: 0\n", [&](const config::ParameterSource& s) {
+                            return sr::loadRotorPlantParameters(s, node_source);
+                          }),
+                          "rotor_inertia_scale", "> 0");
+}
+
+TEST(FrictionDriveParameters, DefaultsOverridesAndErrors) {
+  const auto controller = fromYaml("{}", sr::loadFrictionDriveControllerParameters);
+  EXPECT_EQ(controller.max_actuator_rate, 1000.0);
+  EXPECT_EQ(controller.input_timeout, 0.5);
+  const auto sim = fromYaml("marker_rate: 5\nframe_prefix: roller/\n", sr::loadFrictionDriveSimParameters);
+  EXPECT_EQ(sim.marker_rate, 5.0);
+  EXPECT_EQ(sim.frame_prefix, "roller/");
+  EXPECT_EQ(sim.input_timeout, 0.5);
+  EXPECT_INVALID_ARGUMENT(fromYaml("marker_rate: 0\n", sr::loadFrictionDriveSimParameters),
+                          "marker_rate", "> 0");
+  EXPECT_INVALID_ARGUMENT(fromYaml("input_timeout: x\n", sr::loadFrictionDriveControllerParameters),
+                          "input_timeout", "number");
+}
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
