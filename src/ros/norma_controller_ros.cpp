@@ -10,6 +10,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "spherical_robots/config/norma_config.hpp"
 #include "spherical_robots/config/norma_description.hpp"
 #include "spherical_robots/hardware/simulated_actuators.hpp"
 #include "spherical_robots/norma/norma_simulation.hpp"
@@ -29,9 +30,9 @@ constexpr double kLateAge = 0.002;           // [s] two 1 ms ticks: the delay th
 
 NormaControllerParameters loadNormaControllerParameters(const config::ParameterSource& node) {
   NormaControllerParameters p;
-  p.controller = config::parsedText(node, "controller", "paper", norma::controllerKindFromString);
-  p.limits.max_torque = config::positiveNumber(node, "max_torque", p.limits.max_torque);
-  p.limits.max_force = config::positiveNumber(node, "max_force", p.limits.max_force);
+  const config::NormaControlParameters control = config::normaControlParameters(node);
+  p.controller = control.controller;
+  p.limits = control.limits;
   p.publish_rate = config::positiveNumber(node, "publish_rate", p.publish_rate);
   p.max_stamp_skew = config::positiveNumber(node, "max_stamp_skew", p.max_stamp_skew);
   p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);

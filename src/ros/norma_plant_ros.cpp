@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "spherical_robots/config/norma_config.hpp"
 #include "spherical_robots/config/norma_description.hpp"
 #include "spherical_robots/ros/norma_conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
@@ -31,10 +32,11 @@ PlantLoop::Defaults loopDefaults() {
 
 NormaPlantParameters loadNormaPlantParameters(const config::ParameterSource& node) {
   NormaPlantParameters p;
-  p.variant = config::parsedText(node, "variant", "text", norma::lagrangianVariantFromString);
+  const config::NormaModelParameters model = config::normaModelParameters(node);
+  p.variant = model.variant;
+  p.initial_psi = model.initial_psi;
   p.frame_prefix = node.text("frame_prefix").value_or("");
   p.max_actuator_effort = config::positiveNumber(node, "max_actuator_effort", p.max_actuator_effort);
-  p.initial_psi = config::finiteNumber(node, "initial_psi", p.initial_psi);
   return p;
 }
 

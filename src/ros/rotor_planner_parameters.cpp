@@ -3,6 +3,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "spherical_robots/config/rotor_config.hpp"
 #include "spherical_robots/rotor/figure_eight.hpp"
 
 namespace spherical_robots {
@@ -14,13 +15,11 @@ constexpr double kDefaultMaxRadius = 0.7;  // [R], the issue's default limit
 
 RotorPlannerParameters loadRotorPlannerParameters(const config::ParameterSource& stack,
                                                   const config::ParameterSource& node) {
-  using config::finiteNumber;
-  using config::nonNegativeNumber;
   using config::positiveNumber;
   using config::wholeNumber;
   RotorPlannerParameters p;
-  rotor::ManoeuvreExecutive::Parameters& e = p.executive;
-  e.radius = positiveNumber(node, "sphere_radius", e.radius);
+  p.executive = config::rotorExecutiveParameters(stack, node);
+  const rotor::ManoeuvreExecutive::Parameters& e = p.executive;
   p.max_radius = positiveNumber(node, "max_radius", kDefaultMaxRadius * e.radius);
   if (p.max_radius / e.radius >= rotor::kMaxCircleRadius) {
     std::ostringstream what;
@@ -37,29 +36,15 @@ RotorPlannerParameters loadRotorPlannerParameters(const config::ParameterSource&
   p.odom_timeout = positiveNumber(node, "odom_timeout", p.odom_timeout);
   if (stack.number("inertia_ratio")) p.robot_inertia_ratio = positiveNumber(stack, "inertia_ratio", 0.0);
 
-  e.inertia_scale = positiveNumber(stack, "rotor_inertia_scale", e.inertia_scale);
-  e.curve_rate = positiveNumber(node, "curve_rate", e.curve_rate);
-  e.ramp_time = nonNegativeNumber(node, "ramp_time", e.ramp_time);
-  e.command_period = 1.0 / positiveNumber(node, "command_rate", 1.0 / e.command_period);
-  e.max_rotor_speed = nonNegativeNumber(node, "max_rotor_speed", e.max_rotor_speed);
-  e.settle = nonNegativeNumber(node, "settle", e.settle);
-  e.actuator_time_constant = nonNegativeNumber(node, "actuator_time_constant", 0.0);
-  e.corrections = wholeNumber(node, "corrections", e.corrections, 0);
-  e.correction_tolerance = positiveNumber(node, "correction_tolerance", e.correction_tolerance);
-  e.correction_heading_tolerance =
-      positiveNumber(node, "correction_heading_tolerance", e.correction_heading_tolerance);
-  e.correction_tilt_tolerance =
-      positiveNumber(node, "correction_tilt_tolerance", e.correction_tilt_tolerance);
-  e.correction_steps = wholeNumber(node, "correction_steps", e.correction_steps, 1);
-  e.max_clock_step = positiveNumber(node, "max_clock_step", e.max_clock_step);
-
   if (node.keys("manoeuvre")) {
     RotorPlannerParameters::StartUpManoeuvre m;
-    m.k = positiveNumber(node, "manoeuvre/k", m.k);
-    m.steps = wholeNumber(node, "manoeuvre/steps", m.steps, 1);
-    m.u = finiteNumber(node, "manoeuvre/u", m.u);
-    m.v = finiteNumber(node, "manoeuvre/v", m.v);
-    m.psi = finiteNumber(node, "manoeuvre/psi", m.psi);
+    const config::RotorManoeuvre planned =
+        config::rotorManoeuvre(node, "manoeuvre/", {m.k, m.steps, m.u, m.v, m.psi});
+    m.k = planned.k;
+    m.steps = planned.steps;
+    m.u = planned.u;
+    m.v = planned.v;
+    m.psi = planned.psi;
     m.index = wholeNumber(node, "manoeuvre/index", m.index, 0);
     p.manoeuvre = m;
   }
