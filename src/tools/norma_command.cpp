@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
+#include <optional>
 #include <ostream>
 #include <vector>
 
+#include "spherical_robots/config/norma_config.hpp"
 #include "spherical_robots/config/norma_description.hpp"
 #include "spherical_robots/config/robot_description.hpp"
+#include "spherical_robots/config/yaml_parameter_source.hpp"
 #include "spherical_robots/norma/norma_simulation.hpp"
 #include "spherical_robots/norma/sampled_norma_loop.hpp"
 
@@ -52,8 +56,36 @@ norma::OdeOptions odeOptionsFrom(const ParsedOptions& options) {
   return ode;
 }
 
-norma::LagrangianVariant variantFrom(const ParsedOptions& options) {
-  return norma::lagrangianVariantFromString(options.text("variant"));
+/// The Norma stack's model and controller parameters as its nodes read them:
+/// DIR/config/norma.yaml (norma_plant/..., norma_controller/...); none if DIR has no such file
+/// (a directory of a URDF only, which must then be there), whose defaults equal the shipped file.
+std::optional<config::YamlParameterSource> normaConfig(const ParsedOptions& options) {
+  const std::string path = configDirectory(options) + "/config/norma.yaml";
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  return config::YamlParameterSource(path);
+}
+
+/// The plant's model of the configuration, --variant overriding its variant.
+config::NormaModelParameters modelFrom(const ParsedOptions& options) {
+  config::NormaModelParameters model;
+  model.initial_psi = norma::pathStartHeading();  // config/norma.yaml's
+  if (const auto source = normaConfig(options))
+    model = config::normaModelParameters(*source, config::kNormaPlantKeys, model);
+  if (options.given("variant"))
+    model.variant = norma::lagrangianVariantFromString(options.text("variant"));
+  return model;
+}
+
+/// The controller and effort limits of the configuration, the options overriding them.
+config::NormaControlParameters controlFrom(const ParsedOptions& options) {
+  config::NormaControlParameters control;
+  if (const auto source = normaConfig(options))
+    control = config::normaControlParameters(*source, config::kNormaControllerKeys);
+  if (options.given("controller"))
+    control.controller = norma::controllerKindFromString(options.text("controller"));
+  if (options.given("max-torque")) control.limits.max_torque = options.number("max-torque");
+  if (options.given("max-force")) control.limits.max_force = options.number("max-force");
+  return control;
 }
 
 void writeCsv(std::ostream& out, const std::vector<norma::NormaSample>& samples) {
@@ -89,7 +121,7 @@ int runOpenLoop(const ParsedOptions& options, std::ostream& out) {
     throw UsageError("--open-loop needs --q0 and --qd0");
   }
   norma::OpenLoopConfig config;
-  config.variant = variantFrom(options);
+  config.variant = modelFrom(options).variant;
   config.q0 = vector4(options.numberList("q0", 4));
   config.qd0 = vector4(options.numberList("qd0", 4));
   config.duration = options.given("duration") ? options.number("duration") : kOpenLoopDuration;
@@ -109,7 +141,7 @@ int runOpenLoop(const ParsedOptions& options, std::ostream& out) {
   for (const norma::NormaSample& s : samples) {
     drift = std::max(drift, std::abs(s.energy - samples.front().energy));
   }
-  out << "open loop, variant " << options.text("variant") << ": " << samples.size()
+  out << "open loop, variant " << norma::toString(config.variant) << ": " << samples.size()
       << " rows, energy " << formatNumber(samples.front().energy) << " J at t = 0, max |change| "
       << formatNumber(drift) << " J\n";
   return kSuccess;
@@ -130,13 +162,16 @@ long stepsPerRow(double log_rate, double step) {
 
 /// --loop sampled: the Norma stack's loop, step by step (norma/sampled_norma_loop.hpp).
 std::vector<norma::NormaSample> runSampled(const ParsedOptions& options,
-                                           const norma::ClosedLoopConfig& closed) {
+                                           const norma::ClosedLoopConfig& closed,
+                                           const config::NormaModelParameters& model,
+                                           const config::NormaControlParameters& control) {
   norma::SampledLoopConfig config;
   config.variant = closed.variant;
   config.controller = closed.controller;
   config.duration = closed.duration;
   config.step = kSampledStep;
-  config.limits = {options.number("max-torque"), options.number("max-force")};
+  config.initial_psi = model.initial_psi;
+  config.limits = control.limits;
   config.command_timeout = options.number("command-timeout");
   config.state_timeout = options.number("state-timeout");
   return norma::runSampledLoop(parametersFrom(options), config,
@@ -150,14 +185,16 @@ int runClosedLoop(const ParsedOptions& options, std::ostream& out) {
     requireAbsent(options, kContinuousOnly, "is for --loop continuous (the adaptive integrator)");
   else
     requireAbsent(options, kSampledOnly, "is for --loop sampled");
+  const config::NormaModelParameters model = modelFrom(options);
+  const config::NormaControlParameters control = controlFrom(options);
   norma::ClosedLoopConfig config;
-  config.variant = variantFrom(options);
-  config.controller = norma::controllerKindFromString(options.text("controller"));
+  config.variant = model.variant;
+  config.controller = control.controller;
   config.duration = options.given("duration") ? options.number("duration") : kClosedLoopDuration;
   config.log_rate = options.given("log-rate") ? options.number("log-rate") : kClosedLoopLogRate;
   std::vector<norma::NormaSample> samples;
   if (sampled) {
-    samples = runSampled(options, config);
+    samples = runSampled(options, config, model, control);
   } else {
     config.ode = odeOptionsFrom(options);
     samples = norma::runClosedLoop(parametersFrom(options), config);
@@ -176,7 +213,8 @@ int runClosedLoop(const ParsedOptions& options, std::ostream& out) {
     ++count;
   }
   if (sampled) out << "sampled loop (" << formatNumber(kSampledStep * 1e3) << " ms steps), ";
-  out << "controller " << options.text("controller") << ", variant " << options.text("variant")
+  out << "controller " << norma::toString(config.controller) << ", variant "
+      << norma::toString(config.variant)
       << ": for t >= " << formatNumber(0.5 * config.duration) << " s RMS |e| "
       << formatNumber(std::sqrt(sum_sq / std::max(count, 1L))) << " m, max |e| "
       << formatNumber(worst) << " m; max |delta| " << formatNumber(stroke) << " m\n";
@@ -205,6 +243,10 @@ m_P = m_Sl = 0.5 kg); g = 9.81 m/s^2. It is integrated with Boost.Odeint's
 rosenbrock4 (L-stable, adaptive; the inner pendulum loop's poles are near -130 s^-1) with
 dense output at the log times; the default tolerances keep X, Y within 1 mm of a run at
 rtol = atol = 1e-11 on the paper's scenario.
+The variant, the controller, the effort limits and (--loop sampled) the initial heading not
+given here are DIR/config/norma.yaml's (--config DIR), the file the Norma stack's nodes read
+(norma_plant/variant, norma_plant/initial_psi, norma_controller/controller, max_torque,
+max_force); a DIR without it takes the shipped file's values.
 
 --loop sampled runs the closed loop as the Norma stack (launch/norma_stack.launch, in lock-step,
 the default clock, with ideal actuators) samples it, the same core code in the same order, in
@@ -241,8 +283,8 @@ the energy at t = 0 and its largest change.
 Exit status: 0 success; 2 usage error (unknown option or choice, malformed number, --q0/--qd0
 without --open-loop, --controller or --loop with it, an option of the other --loop); 4 invalid
 input (non-finite or out-of-range number, a --log-rate that is no whole number of steps with
---loop sampled, an unreadable or inconsistent URDF, a state that turns non-finite): one-line
-error on stderr and no output file.
+--loop sampled, an unreadable or inconsistent URDF, a bad value in config/norma.yaml, a state
+that turns non-finite): one-line error on stderr and no output file.
 )";
 
 }  // namespace
@@ -257,14 +299,16 @@ Subcommand normaCommand() {
   command.options = {
       {"controller",
        "NAME",
-       "Closed-loop controller: paper (eqs 48-51 and Table 1, as published) or tracking.",
-       "paper",
+       "Closed-loop controller: paper (eqs 48-51 and Table 1, as published) or tracking.\n"
+       "Default: norma_controller/controller of config/norma.yaml (paper).",
+       "",
        false,
        {"paper", "tracking"}},
       {"variant",
        "NAME",
-       "Inertia matrix: text (eq 45) or appendix (A.3-A.21: M11 without the sphere's yaw term).",
-       "text",
+       "Inertia matrix: text (eq 45) or appendix (A.3-A.21: M11 without the sphere's yaw term).\n"
+       "Default: norma_plant/variant of config/norma.yaml (text).",
+       "",
        false,
        {"text", "appendix"}},
       {"loop",
@@ -274,10 +318,12 @@ Subcommand normaCommand() {
        "continuous",
        false,
        {"continuous", "sampled"}},
-      {"max-torque", "N_M", "--loop sampled: the pendulum motor's effort limit [N m], > 0 (the "
-       "stack's max_torque).", "20", false, {}},
-      {"max-force", "N", "--loop sampled: the slider's effort limit [N], > 0 (the stack's "
-       "max_force).", "200", false, {}},
+      {"max-torque", "N_M", "--loop sampled: the pendulum motor's effort limit [N m], > 0.\n"
+       "Default: norma_controller/max_torque of config/norma.yaml (20), the stack's.", "", false,
+       {}},
+      {"max-force", "N", "--loop sampled: the slider's effort limit [N], > 0.\n"
+       "Default: norma_controller/max_force of config/norma.yaml (200), the stack's.", "", false,
+       {}},
       {"command-timeout", "SECONDS", "--loop sampled: the hardware interface's watchdog [s], > 0 "
        "(the stack's command_timeout).", "0.1", false, {}},
       {"state-timeout", "SECONDS", "--loop sampled: no effort drives the plant once the last "

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "spherical_robots/config/actuator_models.hpp"
+#include "spherical_robots/config/rotor_config.hpp"
 #include "spherical_robots/config/yaml_parameter_source.hpp"
 #include "spherical_robots/rotor/geometric_phase.hpp"
 #include "spherical_robots/rotor/motion_planner.hpp"
@@ -92,31 +93,51 @@ const char* const kExecuteColumns[] = {"t",         "x",         "y",          "
 
 int runRotorExecute(const ParsedOptions& options, std::ostream& out) {
   const double radius = radiusFromUrdf(configDirectory(options) + "/urdf/rotor_sphere.urdf");
+  // The stack's parameters as its nodes read them, the options overriding them.
+  const config::YamlParameterSource stack(configDirectory(options) + "/config/rotor.yaml");
+  rotor::ManoeuvreExecutive::Parameters parameters =
+      config::rotorExecutiveParameters(stack, stack, config::kRotorPlannerKeys);
+  const config::RotorManoeuvre planned = config::rotorManoeuvre(stack, "manoeuvre/");
   rotor::RotorStackSampling sampling;
-  sampling.k = numberAbove(options, "k", 0.0, false);
   rotor::PlanRequest request;
-  request.k = sampling.k;
-  request.steps = options.integer("steps");
+  if (options.given("k")) {
+    sampling.k = numberAbove(options, "k", 0.0, false);
+    request.k = sampling.k;
+  } else {
+    sampling.k = config::positiveNumber(stack, "inertia_ratio", sampling.k);
+    request.k = planned.k;
+  }
+  request.steps = options.given("steps") ? options.integer("steps") : planned.steps;
   if (request.steps < 1) {
     throw InvalidInput("--steps must be >= 1, got " + std::to_string(request.steps));
   }
-  const std::vector<double> target = options.numberList("target", 3);
+  const std::vector<double> target = options.given("target")
+                                         ? options.numberList("target", 3)
+                                         : std::vector<double>{planned.u, planned.v, planned.psi};
   request.u_a = target[0] / radius;  // as rotor_planner takes ~manoeuvre/u, v [m]
   request.v_a = target[1] / radius;
   request.psi = target[2];
   request.max_radius = 0.7 * radius / radius;  // rotor_planner's default ~max_radius, 0.7 R [m]
-  rotor::ManoeuvreExecutive::Parameters parameters;
   parameters.radius = radius;
-  parameters.curve_rate = numberAbove(options, "curve-rate", 0.0, false);
-  parameters.max_rotor_speed = numberAbove(options, "max-rotor-speed", 0.0, true);
-  parameters.actuator_time_constant = numberAbove(options, "actuator-time-constant", 0.0, true);
-  parameters.corrections = options.integer("corrections");
-  if (parameters.corrections < 0) {
-    throw InvalidInput("--corrections must be >= 0, got " + std::to_string(parameters.corrections));
+  if (options.given("curve-rate"))
+    parameters.curve_rate = numberAbove(options, "curve-rate", 0.0, false);
+  if (options.given("max-rotor-speed"))
+    parameters.max_rotor_speed = numberAbove(options, "max-rotor-speed", 0.0, true);
+  if (options.given("actuator-time-constant"))
+    parameters.actuator_time_constant = numberAbove(options, "actuator-time-constant", 0.0, true);
+  if (options.given("corrections")) {
+    parameters.corrections = options.integer("corrections");
+    if (parameters.corrections < 0) {
+      throw InvalidInput("--corrections must be >= 0, got " +
+                         std::to_string(parameters.corrections));
+    }
   }
-  parameters.correction_tolerance = numberAbove(options, "correction-tolerance", 0.0, false);
-  parameters.correction_tilt_tolerance =
-      numberAbove(options, "correction-tilt-tolerance", 0.0, false);
+  if (options.given("correction-tolerance"))
+    parameters.correction_tolerance = numberAbove(options, "correction-tolerance", 0.0, false);
+  if (options.given("correction-tilt-tolerance")) {
+    parameters.correction_tilt_tolerance =
+        numberAbove(options, "correction-tilt-tolerance", 0.0, false);
+  }
   if (options.given("actuator-models")) {
     const config::ActuatorModels models = config::loadActuatorModels(
         config::YamlParameterSource(options.text("actuator-models")), {"rotor_1", "rotor_2"});
@@ -231,8 +252,12 @@ by the same rotor manoeuvre executive as rotor_planner, through the hardware int
 advances with the last measured rotor speeds held and publishes odometry at 50 Hz, the executive
 commands every 10 ms from the rest measured from it, the actuators follow at 100 Hz. Times are
 whole nanoseconds from the stack's first step (t = 0 here). The sphere's radius R is the
-base_link sphere of DIR/urdf/rotor_sphere.urdf; J_zz / J_r = 12, settle 1 s, ramps 1 s,
-heading tolerance 1e-3 rad, one-step corrections, as the stack's rotor_planner.
+base_link sphere of DIR/urdf/rotor_sphere.urdf. The robot's inertia ratio and J_zz / J_r, the
+manoeuvre, and the executive's parameters (curve rate, ramps, command rate, rotor limit, settle,
+corrections and their tolerances) not given here are DIR/config/rotor.yaml's (--config DIR), the
+file the rotor stack's nodes read (inertia_ratio, rotor_inertia_scale, manoeuvre/...,
+rotor_planner/...); shipped: J_zz / J_r = 12, settle 1 s, ramps 1 s, heading tolerance
+1e-3 rad, one-step corrections.
 
 CSV columns (SI units, radians; one row every 1/log-rate s from t = 0 through the duration):
   t                     time [s]
@@ -249,7 +274,8 @@ stdout: one line: how far the centre ended from the target, the corrections made
 Exit status: 0 success; 3 no plan for the target (the file holds the header only; stdout says
 why); 2 usage error (unknown option, malformed number, a target that is not three numbers);
 4 invalid input (non-finite or out-of-range number, duration or log period not a whole number
-of steps, unreadable config or actuator models): one-line error on stderr and no output file.
+of steps, unreadable config, a bad value in config/rotor.yaml or actuator models): one-line
+error on stderr and no output file.
 )";
 
 /// --k, the same for rotor-step and rotor-plan.
@@ -303,26 +329,42 @@ Subcommand rotorExecuteCommand() {
   command.summary = "The rotor stack's run: a plan executed through the rotors, optionally corrected.";
   command.description = kExecuteDescription;
   command.options = {
-      {"k", "K", "Inertia ratio k = J_xx / J_zz of the robot and the plan (eq 14), > 0.", "2.5",
-       false, {}},
-      {"steps", "N", "Number of figure eights n of the plan, a whole number >= 1.", "2", false, {}},
+      {"k", "K",
+       "Inertia ratio k = J_xx / J_zz of the robot and the plan (eq 14), > 0.\n"
+       "Default: inertia_ratio (the robot) and manoeuvre/k (the plan) of config/rotor.yaml (2.5).",
+       "", false, {}},
+      {"steps", "N",
+       "Number of figure eights n of the plan, a whole number >= 1.\n"
+       "Default: manoeuvre/steps of config/rotor.yaml (2).",
+       "", false, {}},
       {"target", "U,V,PSI",
-       "Target from the start: contact point (U, V) on the plane [m], heading PSI [rad].",
-       "0.05,0.03,0.4", false, {}},
-      {"curve-rate", "RATE", "Curve rate theta_dot of the cruise [rad/s], > 0.", "1", false, {}},
+       "Target from the start: contact point (U, V) on the plane [m], heading PSI [rad].\n"
+       "Default: manoeuvre/{u,v,psi} of config/rotor.yaml (0.05,0.03,0.4).",
+       "", false, {}},
+      {"curve-rate", "RATE",
+       "Curve rate theta_dot of the cruise [rad/s], > 0.\n"
+       "Default: rotor_planner/curve_rate of config/rotor.yaml (1).",
+       "", false, {}},
       {"max-rotor-speed", "SPEED",
-       "Largest rotor set-point [rad/s], >= 0 (0: no limit): the curve rate is lowered to fit.",
-       "25", false, {}},
+       "Largest rotor set-point [rad/s], >= 0 (0: no limit): the curve rate is lowered to fit.\n"
+       "Default: rotor_planner/max_rotor_speed of config/rotor.yaml (25).",
+       "", false, {}},
       {"actuator-time-constant", "TAU",
-       "Feed-forward of a first-order rotor lag of TAU [s], >= 0 (0: none).", "0", false, {}},
+       "Feed-forward of a first-order rotor lag of TAU [s], >= 0 (0: none).\n"
+       "Default: rotor_planner/actuator_time_constant of config/rotor.yaml (0).",
+       "", false, {}},
       {"corrections", "N",
-       "Corrective manoeuvres after the plan, a whole number >= 0 (0: open loop).", "0", false,
-       {}},
+       "Corrective manoeuvres after the plan, a whole number >= 0 (0: open loop).\n"
+       "Default: rotor_planner/corrections of config/rotor.yaml (0).",
+       "", false, {}},
       {"correction-tolerance", "METRES",
-       "A smaller miss on the plane is not corrected [m], > 0.", "1e-05", false, {}},
+       "A smaller miss on the plane is not corrected [m], > 0.\n"
+       "Default: rotor_planner/correction_tolerance of config/rotor.yaml (1e-05).",
+       "", false, {}},
       {"correction-tilt-tolerance", "RAD",
-       "The contact this close to the south pole needs no arc back to it [rad], > 0.", "0.0001",
-       false, {}},
+       "The contact this close to the south pole needs no arc back to it [rad], > 0.\n"
+       "Default: rotor_planner/correction_tilt_tolerance of config/rotor.yaml (0.0001).",
+       "", false, {}},
       {"duration", "SECONDS",
        "Simulated time [s] after the first step, >= 0, a whole number of log periods\n"
        "(default: 20 + 10 per correction, as the stack).",
