@@ -48,6 +48,15 @@ std::map<std::string, std::string> launchDefaults(const std::string& launch) {
   return defaults;
 }
 
+auto pid(const norma::PidGains& g) { return std::make_tuple(g.kp, g.ki, g.kd); }
+
+auto everyField(const norma::ControllerGains& g) {
+  return std::make_tuple(g.kinematic.k1, g.kinematic.k2, g.kinematic.k3, pid(g.rate),
+                         pid(g.pendulum), pid(g.slider), g.along_gain, g.cross_gain,
+                         g.heading_gain, g.tilt_gain, g.tilt_damping, g.max_slider,
+                         pid(g.tracking_slider));
+}
+
 auto everyField(const rotor::ManoeuvreExecutive::Parameters& e) {
   return std::make_tuple(e.radius, e.inertia_scale, e.curve_rate, e.ramp_time, e.command_period,
                          e.max_rotor_speed, e.settle, e.actuator_time_constant, e.corrections,
@@ -70,6 +79,9 @@ TEST(NormaConfig, ShippedFileEqualsTheDefaultsToTheBit) {
   EXPECT_EQ(control.controller, norma::ClosedLoopConfig().controller);
   EXPECT_EQ(control.limits.max_torque, norma::EffortLimits().max_torque);
   EXPECT_EQ(control.limits.max_force, norma::EffortLimits().max_force);
+  EXPECT_EQ(everyField(control.gains), everyField(norma::ControllerGains()));
+  EXPECT_EQ(everyField(control.gains), everyField(norma::ClosedLoopConfig().gains));
+  EXPECT_EQ(everyField(control.gains), everyField(norma::SampledLoopConfig().gains));
 }
 
 TEST(NormaConfig, LaunchArgumentsDefaultToTheFile) {
@@ -91,6 +103,13 @@ TEST(NormaConfig, AbsentKeysKeepTheDefaultsPresentOnesOverride) {
   EXPECT_EQ(control.controller, norma::ControllerKind::kPaper);
   EXPECT_EQ(control.limits.max_torque, 20.0);
   EXPECT_EQ(control.limits.max_force, 50.0);
+  EXPECT_EQ(everyField(control.gains), everyField(norma::ControllerGains()));
+  const TempYaml gains("norma_controller: {gains: {pendulum: {kd: 4.0}, tilt_gain: 0.1}}\n");
+  const auto tuned = config::normaControlParameters(YamlParameterSource(gains.path()),
+                                                    config::kNormaControllerKeys);
+  EXPECT_EQ(tuned.gains.pendulum.kd, 4.0);
+  EXPECT_EQ(tuned.gains.pendulum.kp, 10.0);
+  EXPECT_EQ(tuned.gains.tilt_gain, 0.1);
 }
 
 TEST(NormaConfig, BadValuesNameTheKeyTheValueAndTheFile) {
@@ -110,6 +129,14 @@ TEST(NormaConfig, BadValuesNameTheKeyTheValueAndTheFile) {
   EXPECT_INVALID_ARGUMENT(config::normaControlParameters(YamlParameterSource(controller.path()),
                                                          config::kNormaControllerKeys),
                           "norma_controller/controller", "pid", controller.path());
+  const TempYaml k3("norma_controller: {gains: {kinematic: {k3: nope}}}\n");
+  EXPECT_INVALID_ARGUMENT(config::normaControlParameters(YamlParameterSource(k3.path()),
+                                                         config::kNormaControllerKeys),
+                          "norma_controller/gains/kinematic/k3", "nope", k3.path());
+  const TempYaml rate_kd("norma_controller: {gains: {rate: {kd: 1.0}}}\n");
+  EXPECT_INVALID_ARGUMENT(config::normaControlParameters(YamlParameterSource(rate_kd.path()),
+                                                         config::kNormaControllerKeys),
+                          "norma_controller/gains/", "PID1 kd must be 0", rate_kd.path());
 }
 
 TEST(RotorConfig, ShippedFileEqualsTheDefaultsToTheBit) {

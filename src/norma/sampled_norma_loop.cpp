@@ -74,7 +74,7 @@ SampledNormaLoop::SampledNormaLoop(const NormaParameters& parameters,
       config_(validated(config)),
       step_ns_(checkedStepNanoseconds(config.step)),
       timeline_(config.duration, kDefaultMaxClockStep),
-      control_(NormaController(parameters, config.controller), config.limits),
+      control_(NormaController(parameters, config.controller, config.gains), config.limits),
       actuators_(idealEffortActuators(config.limits, config.command_timeout)) {
   state_.psi = config.initial_psi;
 }

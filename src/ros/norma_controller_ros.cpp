@@ -32,6 +32,7 @@ NormaControllerParameters loadNormaControllerParameters(const config::ParameterS
   NormaControllerParameters p;
   const config::NormaControlParameters control = config::normaControlParameters(node);
   p.controller = control.controller;
+  p.gains = control.gains;
   p.limits = control.limits;
   p.publish_rate = config::positiveNumber(node, "publish_rate", p.publish_rate);
   p.max_stamp_skew = config::positiveNumber(node, "max_stamp_skew", p.max_stamp_skew);
@@ -42,7 +43,8 @@ NormaControllerParameters loadNormaControllerParameters(const config::ParameterS
 NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : parameters_(loadNormaControllerParameters(RosParameterSource(pnh))),
       robot_(fromRobotDescription(nh, config::normaParametersFromUrdf)),
-      loop_(norma::NormaController(robot_, parameters_.controller), parameters_.limits),
+      loop_(norma::NormaController(robot_, parameters_.controller, parameters_.gains),
+            parameters_.limits),
       input_(nh.resolveName("norma_state"), parameters_.input_timeout),
       actuator_input_(nh.resolveName("actuators/state"), parameters_.input_timeout),
       work_([this](const spherical_robots::NormaState& msg) { control(msg); }, step_publications_),

@@ -168,6 +168,7 @@ std::vector<norma::NormaSample> runSampled(const ParsedOptions& options,
   norma::SampledLoopConfig config;
   config.variant = closed.variant;
   config.controller = closed.controller;
+  config.gains = closed.gains;
   config.duration = closed.duration;
   config.step = kSampledStep;
   config.initial_psi = model.initial_psi;
@@ -190,6 +191,7 @@ int runClosedLoop(const ParsedOptions& options, std::ostream& out) {
   norma::ClosedLoopConfig config;
   config.variant = model.variant;
   config.controller = control.controller;
+  config.gains = control.gains;
   config.duration = options.given("duration") ? options.number("duration") : kClosedLoopDuration;
   config.log_rate = options.given("log-rate") ? options.number("log-rate") : kClosedLoopLogRate;
   std::vector<norma::NormaSample> samples;
@@ -243,10 +245,10 @@ m_P = m_Sl = 0.5 kg); g = 9.81 m/s^2. It is integrated with Boost.Odeint's
 rosenbrock4 (L-stable, adaptive; the inner pendulum loop's poles are near -130 s^-1) with
 dense output at the log times; the default tolerances keep X, Y within 1 mm of a run at
 rtol = atol = 1e-11 on the paper's scenario.
-The variant, the controller, the effort limits and (--loop sampled) the initial heading not
-given here are DIR/config/norma.yaml's (--config DIR), the file the Norma stack's nodes read
-(norma_plant/variant, norma_plant/initial_psi, norma_controller/controller, max_torque,
-max_force); a DIR without it takes the shipped file's values.
+The variant, the controller, its gains, the effort limits and (--loop sampled) the initial
+heading not given here are DIR/config/norma.yaml's (--config DIR), the file the Norma stack's
+nodes read (norma_plant/variant, norma_plant/initial_psi, norma_controller/controller, gains/...,
+max_torque, max_force); a DIR without it takes the shipped file's values (the gains above).
 
 --loop sampled runs the closed loop as the Norma stack (launch/norma_stack.launch, in lock-step,
 the default clock, with ideal actuators) samples it, the same core code in the same order, in

@@ -25,10 +25,11 @@ struct NormaModelParameters {
   double initial_psi = 0.0;  ///< [rad]; the stack's (config/norma.yaml) is pathStartHeading()
 };
 
-/// The controller and the actuators' effort limits it winds up against.
+/// The controller, its gains and the actuators' effort limits it winds up against.
 struct NormaControlParameters {
   norma::ControllerKind controller = norma::ControllerKind::kPaper;
-  norma::EffortLimits limits;  ///< max_torque [N m], max_force [N], > 0
+  norma::ControllerGains gains;  ///< of both controllers (section 5's and this project's)
+  norma::EffortLimits limits;    ///< max_torque [N m], max_force [N], > 0
 };
 
 /// Keys prefix + variant (text | appendix), prefix + initial_psi (finite); absent: `fallback`'s.
@@ -37,7 +38,10 @@ NormaModelParameters normaModelParameters(const ParameterSource& source,
                                           const std::string& prefix = "",
                                           const NormaModelParameters& fallback = {});
 
-/// Keys prefix + controller (paper | tracking), prefix + max_torque, prefix + max_force (> 0);
+/// Keys prefix + controller (paper | tracking), prefix + max_torque, prefix + max_force (> 0),
+/// prefix + gains/kinematic/{k1, k2, k3}, prefix + gains/{rate, pendulum, slider,
+/// tracking_slider}/{kp, ki, kd}, prefix + gains/{along_gain, cross_gain, heading_gain,
+/// tilt_gain, tilt_damping, max_slider} (norma::ControllerGains, checked by norma::validate);
 /// absent: `fallback`'s.
 /// @throw std::invalid_argument naming the key, its value and the source on a bad value.
 NormaControlParameters normaControlParameters(const ParameterSource& source,

@@ -32,6 +32,7 @@ namespace spherical_robots::norma {
 struct SampledLoopConfig {
   LagrangianVariant variant = LagrangianVariant::kText;
   ControllerKind controller = ControllerKind::kPaper;
+  ControllerGains gains;  ///< the controller's (norma_controller's ~gains)
   /// [s] the plant's step (its ~step, and its RK4 step) and the hardware interface's period
   /// (1 / ~rate): the stack has both at 1 ms. > 0, at most kDefaultMaxClockStep.
   double step = 0.001;

@@ -22,6 +22,7 @@ namespace spherical_robots {
 /// Every private parameter of norma_controller (docs/nodes.md).
 struct NormaControllerParameters {
   norma::ControllerKind controller = norma::ControllerKind::kPaper;
+  norma::ControllerGains gains;  ///< ~gains/... (config/norma.yaml)
   /// The actuators' limits (as the hardware interface has them), for the anti-windup.
   norma::EffortLimits limits;
   double publish_rate = 50.0;   ///< [Hz] of tracking_error and target
