@@ -14,6 +14,8 @@ packages=(
   libdiagnostic-msgs-dev libstd-msgs-dev libstd-srvs-dev libdiagnostic-updater-dev
   # every node as a nodelet: the library, pluginlib, and the `nodelet` manager and loader
   libnodeletlib-dev pluginlib-dev libnodeletlib-tools
+  # parameters changed while a stack runs: the C++ server, the cfg generator and the client
+  libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
   # core libraries (liburdfdom-dev: urdf_parser/urdf_parser.h, linked directly; no ROS urdf)
   libeigen3-dev liburdfdom-dev libboost-dev libyaml-cpp-dev
   # tests and benchmarks

@@ -182,6 +182,48 @@ class HardwareInterfaceSimCheck(unittest.TestCase):
                 self.assertLessEqual(abs(v1 - v0), self.max_acceleration * dt + 1e-4,
                                      'acceleration limit exceeded: %g -> %g in %g s' % (v0, v1, dt))
 
+    def test_reconfigured_limits_apply_mid_run(self):
+        """dynamic_reconfigure lowers the rate and acceleration limits of a running actuator: its
+        velocity ramps down to the new limit at the new acceleration, never jumps; a non-finite
+        value is refused and the last good one is handed back and kept."""
+        if not rospy.get_param('~reconfigurable', False):
+            self.skipTest('this implementation offers no dynamic_reconfigure')
+        from dynamic_reconfigure.client import Client
+        client = Client(rospy.resolve_name(rospy.get_param('~node', 'hardware_interface')),
+                        timeout=30.0)
+        theta = self.names[0]
+        fast = 0.75 * self.max_velocity
+        lowered = {'max_velocity': 0.25 * self.max_velocity,
+                   'max_acceleration': 0.5 * self.max_acceleration}
+        try:
+            self.reach({theta: fast})
+            applied = client.update_configuration(lowered)
+            for key, value in lowered.items():
+                self.assertAlmostEqual(applied[key], value, delta=1e-12, msg=key)
+            start = rospy.get_time()
+            ramp = (fast - lowered['max_velocity']) / lowered['max_acceleration']
+            self.commandFor({theta: fast}, ramp + 1.0)
+            self.assertAlmostEqual(self.velocity(self.latest(), theta), lowered['max_velocity'],
+                                   delta=EXACT, msg='the set-point is clamped to the new limit')
+            states = self.statesSince(start)
+            self.assertGreater(len(states), 20)
+            for prev, cur in zip(states, states[1:]):
+                dt = cur.header.stamp.to_sec() - prev.header.stamp.to_sec()
+                v0, v1 = self.velocity(prev, theta), self.velocity(cur, theta)
+                self.assertLessEqual(abs(v1 - v0), lowered['max_acceleration'] * dt + 1e-4,
+                                     'faster than the new acceleration limit: %g -> %g in %g s'
+                                     % (v0, v1, dt))
+
+            kept = client.update_configuration({'command_timeout': float('nan')})
+            self.assertAlmostEqual(kept['command_timeout'], self.timeout, delta=1e-12)
+            self.waitFor(lambda: 'command_timeout' in
+                         self.diagnostics()[1]['last refused reconfiguration'], 5.0,
+                         'diagnostics to name the refused command_timeout')
+        finally:
+            client.update_configuration({'max_velocity': self.max_velocity,
+                                         'max_acceleration': self.max_acceleration,
+                                         'command_timeout': self.timeout})
+
     def test_watchdog_brings_actuators_to_rest(self):
         theta = self.names[0]
         v = 0.5 * self.max_velocity

@@ -6,6 +6,8 @@
 #include <string>
 
 #include "expect_invalid_argument.hpp"
+#include "spherical_robots/HardwareInterfaceSimConfig.h"
+#include "spherical_robots/config/hardware_interface_config.hpp"
 #include "spherical_robots/config/plant_loop_parameters.hpp"
 #include "spherical_robots/config/yaml_parameter_source.hpp"
 #include "spherical_robots/ros/friction_drive_controller_ros.hpp"
@@ -202,6 +204,17 @@ TEST(FrictionDriveParameters, DefaultsOverridesAndErrors) {
                           "marker_rate", "> 0");
   EXPECT_INVALID_ARGUMENT(fromYaml("input_timeout: x\n", sr::loadFrictionDriveControllerParameters),
                           "input_timeout", "number");
+}
+
+// dynamic_reconfigure writes its .cfg defaults to the parameter server when a parameter is unset:
+// they must be the loader's, or starting the reconfigure server would change the node's limits.
+TEST(Reconfigure, HardwareInterfaceSimDefaultsAreTheLoaders) {
+  const config::HardwareInterfaceSimParameters loaded = fromYaml(
+      "actuator_names: [theta]", config::loadHardwareInterfaceSimParameters);
+  const auto& defaults = spherical_robots::HardwareInterfaceSimConfig::__getDefault__();
+  EXPECT_EQ(defaults.max_velocity, loaded.limits.front().max_velocity);
+  EXPECT_EQ(defaults.max_acceleration, loaded.limits.front().max_acceleration);
+  EXPECT_EQ(defaults.command_timeout, loaded.command_timeout);
 }
 
 int main(int argc, char** argv) {

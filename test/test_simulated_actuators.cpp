@@ -332,6 +332,63 @@ TEST(SimulatedActuators, BadConstructorArgumentsThrowWithContext) {
   EXPECT_INVALID_ARGUMENT(SimulatedActuators(names, {{-3.0, 20.0}, {10.0, 20.0}}, 0.5), "got -3");
 }
 
+// dynamic_reconfigure lowers the rate limit while an actuator runs at 8 rad/s: the set-point is
+// clamped to the new 5 rad/s and the velocity ramps down to it at the new 4 rad/s^2 (closed form
+// v(t) = 8 - 4 (t - 1) until 5, at t = 1.75 s), never jumps.
+TEST(SimulatedActuators, LoweredLimitsClampTheSetPointAndTheVelocityRampsDown) {
+  SimulatedActuators actuators = makeActuators(10.0, 20.0, 100.0);
+  ASSERT_EQ(actuators.command({"theta"}, {8.0}, 0.0), "");
+  actuators.update(1.0);
+  ASSERT_NEAR(actuators.velocities()[0], 8.0, kTol);
+  actuators.setLimits(std::vector<ActuatorLimits>(3, {5.0, 4.0}), 100.0, 1.0);
+  EXPECT_NEAR(actuators.setpoints()[0], 5.0, kTol);
+  EXPECT_NEAR(actuators.velocities()[0], 8.0, kTol);  // the velocity does not jump
+  for (double t : {1.25, 1.5, 1.7}) {
+    actuators.update(t);
+    EXPECT_NEAR(actuators.velocities()[0], 8.0 - 4.0 * (t - 1.0), kTol) << t;
+  }
+  actuators.update(2.5);
+  EXPECT_NEAR(actuators.velocities()[0], 5.0, kTol);
+  // A later command is clamped to the new limit and counted as saturated.
+  ASSERT_EQ(actuators.command({"phi"}, {9.0}, 2.5), "");
+  EXPECT_NEAR(actuators.setpoints()[1], 5.0, kTol);
+  EXPECT_EQ(actuators.saturations()[1], 1u);
+}
+
+// A shorter timeout moves the watchdog deadline to the last command + the new timeout.
+TEST(SimulatedActuators, ANewCommandTimeoutMovesTheWatchdogDeadline) {
+  SimulatedActuators actuators = makeActuators(10.0, 20.0, 5.0);
+  ASSERT_EQ(actuators.command({"theta"}, {2.0}, 0.0), "");
+  actuators.update(0.2);
+  actuators.setLimits(actuators.limits(), 0.3, 0.2);
+  actuators.update(0.29);
+  EXPECT_FALSE(actuators.timedOut());
+  actuators.update(0.31);
+  EXPECT_TRUE(actuators.timedOut());
+  EXPECT_DOUBLE_EQ(actuators.commandTimeout(), 0.3);
+}
+
+// The same rules as the constructor's, and a refused change changes nothing.
+TEST(SimulatedActuators, BadLimitsAreRefusedAndChangeNothing) {
+  SimulatedActuators actuators = makeActuators(10.0, 20.0, 0.5);
+  ASSERT_EQ(actuators.command({"theta"}, {3.0}, 0.0), "");
+  for (double bad : {0.0, -1.0, kNaN, kInf}) {
+    EXPECT_INVALID_ARGUMENT(actuators.setLimits({{10.0, 20.0}, {bad, 20.0}, {10.0, 20.0}}, 0.5, 0.1),
+                            "max_velocity of 'phi'")
+        << bad;
+    EXPECT_INVALID_ARGUMENT(actuators.setLimits(actuators.limits(), bad, 0.1), "command_timeout")
+        << bad;
+  }
+  EXPECT_INVALID_ARGUMENT(actuators.setLimits({{10.0, 20.0}}, 0.5, 0.1), "1 limit entries");
+  ActuatorLimits effort{10.0, 20.0, 2.0, ActuatorKind::Effort};
+  EXPECT_INVALID_ARGUMENT(actuators.setLimits({effort, {10.0, 20.0}, {10.0, 20.0}}, 0.5, 0.1),
+                          "'theta' cannot change between velocity and effort");
+  EXPECT_EQ(actuators.now(), 0.0);  // refused before the clock moved
+  EXPECT_DOUBLE_EQ(actuators.limits()[1].max_velocity, 10.0);
+  EXPECT_DOUBLE_EQ(actuators.commandTimeout(), 0.5);
+  EXPECT_DOUBLE_EQ(actuators.setpoints()[0], 3.0);
+}
+
 // ---- Actuator models ------------------------------------------------------------------------
 
 namespace {

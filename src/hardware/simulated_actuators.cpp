@@ -36,12 +36,6 @@ SimulatedActuators::SimulatedActuators(std::vector<std::string> names,
       models_(std::move(models)),
       noise_engine_(noise_seed) {
   if (names_.empty()) throw std::invalid_argument("SimulatedActuators: no actuator names given");
-  if (limits_.size() != names_.size()) {
-    std::ostringstream msg;
-    msg << "SimulatedActuators: " << names_.size() << " actuator names (" << joined(names_)
-        << ") but " << limits_.size() << " limit entries";
-    throw std::invalid_argument(msg.str());
-  }
   if (models_.empty()) models_.assign(names_.size(), ActuatorModel{});
   if (models_.size() != names_.size()) {
     std::ostringstream msg;
@@ -58,10 +52,6 @@ SimulatedActuators::SimulatedActuators(std::vector<std::string> names,
       throw std::invalid_argument("SimulatedActuators: actuator name '" + names_[i] +
                                   "' appears twice");
     const std::string of = " of '" + names_[i] + "'";
-    requirePositive(limits_[i].max_velocity, "SimulatedActuators: max_velocity" + of + " [rad/s]");
-    requirePositive(limits_[i].max_acceleration,
-                    "SimulatedActuators: max_acceleration" + of + " [rad/s^2]");
-    requirePositive(limits_[i].max_effort, "SimulatedActuators: max_effort" + of + " [N m or N]");
     requireNonNegative(models_[i].time_constant, "SimulatedActuators: time_constant" + of + " [s]");
     requireNonNegative(models_[i].dead_time, "SimulatedActuators: dead_time" + of + " [s]");
     requireNonNegative(models_[i].position_resolution,
@@ -69,7 +59,7 @@ SimulatedActuators::SimulatedActuators(std::vector<std::string> names,
     requireNonNegative(models_[i].velocity_noise,
                        "SimulatedActuators: velocity_noise" + of + " [rad/s]");
   }
-  requirePositive(command_timeout_, "SimulatedActuators: command_timeout [s]");
+  requireValidLimits(limits_, command_timeout_);
   setpoints_.assign(names_.size(), 0.0);
   active_setpoints_.assign(names_.size(), 0.0);
   pending_.assign(names_.size(), {});
@@ -79,6 +69,44 @@ SimulatedActuators::SimulatedActuators(std::vector<std::string> names,
   saturations_.assign(names_.size(), 0);
   measured_velocities_.assign(names_.size(), 0.0);
   measured_positions_.assign(names_.size(), 0.0);
+}
+
+void SimulatedActuators::requireValidLimits(const std::vector<ActuatorLimits>& limits,
+                                            double command_timeout) const {
+  if (limits.size() != names_.size()) {
+    std::ostringstream msg;
+    msg << "SimulatedActuators: " << names_.size() << " actuator names (" << joined(names_)
+        << ") but " << limits.size() << " limit entries";
+    throw std::invalid_argument(msg.str());
+  }
+  for (std::size_t i = 0; i < names_.size(); ++i) {
+    const std::string of = " of '" + names_[i] + "'";
+    requirePositive(limits[i].max_velocity, "SimulatedActuators: max_velocity" + of + " [rad/s]");
+    requirePositive(limits[i].max_acceleration,
+                    "SimulatedActuators: max_acceleration" + of + " [rad/s^2]");
+    requirePositive(limits[i].max_effort, "SimulatedActuators: max_effort" + of + " [N m or N]");
+    if (limits[i].kind != limits_[i].kind)
+      throw std::invalid_argument("SimulatedActuators: actuator '" + names_[i] +
+                                  "' cannot change between velocity and effort");
+  }
+  requirePositive(command_timeout, "SimulatedActuators: command_timeout [s]");
+}
+
+void SimulatedActuators::setLimits(const std::vector<ActuatorLimits>& limits,
+                                   double command_timeout, double t) {
+  requireValidLimits(limits, command_timeout);
+  update(t);
+  limits_ = limits;
+  command_timeout_ = command_timeout;
+  // Set-points beyond a lowered limit are clamped as a new command would be; a velocity above
+  // it then ramps down at the acceleration limit, as after any other set-point change.
+  for (std::size_t i = 0; i < names_.size(); ++i) {
+    const double limit = limitOf(limits_[i]);
+    setpoints_[i] = std::clamp(setpoints_[i], -limit, limit);
+    active_setpoints_[i] = std::clamp(active_setpoints_[i], -limit, limit);
+    for (Pending& pending : pending_[i]) pending.value = std::clamp(pending.value, -limit, limit);
+  }
+  applyInstantEfforts();
 }
 
 std::string SimulatedActuators::command(const std::vector<std::string>& names,

@@ -77,6 +77,13 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
         nh, std::vector<std::pair<ros::Timer*, double>>{{&timer_, 1.0 / rate}}, clock_.maxStep());
   }
 
+  reconfigure_ = std::make_unique<
+      dynamic_reconfigure::Server<spherical_robots::HardwareInterfaceSimConfig>>(pnh);
+  reconfigure_->setCallback(
+      [this](spherical_robots::HardwareInterfaceSimConfig& config, std::uint32_t level) {
+        onReconfigure(config, level);
+      });
+
   const auto& limits = actuators_.limits().front();
   ROS_INFO("hardware_interface_sim: %zu actuators, |velocity| <= %g rad/s, |accel| <= %g rad/s^2, "
            "command timeout %g s, publishing %s at %g Hz",
@@ -161,6 +168,40 @@ void HardwareInterfaceSimRos::followClock(const ros::Time& now) {
                   << " s): continuing from the new time, no time taken as elapsed");
 }
 
+void HardwareInterfaceSimRos::onReconfigure(spherical_robots::HardwareInterfaceSimConfig& config,
+                                            std::uint32_t /*level*/) {
+  std::vector<hardware::ActuatorLimits> limits = actuators_.limits();
+  const auto velocity_actuator =
+      std::find_if(limits.begin(), limits.end(), [](const hardware::ActuatorLimits& l) {
+        return l.kind == hardware::ActuatorKind::Velocity;
+      });
+  for (hardware::ActuatorLimits& l : limits) {
+    if (l.kind != hardware::ActuatorKind::Velocity) continue;
+    l.max_velocity = config.max_velocity;
+    l.max_acceleration = config.max_acceleration;
+  }
+  const ros::Time now = this->now();
+  followClock(now);
+  try {
+    actuators_.setLimits(limits, config.command_timeout, now.toSec());
+  } catch (const std::invalid_argument& e) {
+    reconfigure_problem_ = e.what();
+    ROS_ERROR_STREAM("hardware_interface_sim: reconfiguration refused, the last good limits kept: "
+                     << e.what());
+    if (velocity_actuator != limits.end()) {
+      const hardware::ActuatorLimits& kept = actuators_.limits()[velocity_actuator - limits.begin()];
+      config.max_velocity = kept.max_velocity;
+      config.max_acceleration = kept.max_acceleration;
+    }
+    config.command_timeout = actuators_.commandTimeout();
+    updater_.force_update();
+    return;
+  }
+  ROS_INFO("hardware_interface_sim: reconfigured: |velocity| <= %g rad/s, |accel| <= %g rad/s^2, "
+           "command timeout %g s",
+           config.max_velocity, config.max_acceleration, config.command_timeout);
+}
+
 void HardwareInterfaceSimRos::publishState(const ros::Time& stamp) {
   // The measurement (quantised, noisy if so configured), not the true state.
   state_pub_.publish(shared(conversions::jointState(
@@ -186,6 +227,8 @@ void HardwareInterfaceSimRos::diagnose(diagnostic_updater::DiagnosticStatusWrapp
   status.add("last rejection", reason.empty() ? std::string("none") : reason);
   command_input_.reportRejections(status);
   status.add("clock jumps", clock_.jumps());
+  status.add("last refused reconfiguration",
+             reconfigure_problem_.empty() ? std::string("none") : reconfigure_problem_);
   status.add("command timeout [s]", actuators_.commandTimeout());
   status.add("command age [s]", actuators_.commandAge());
   for (std::size_t i = 0; i < actuators_.names().size(); ++i) {

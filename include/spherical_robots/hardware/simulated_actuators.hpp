@@ -100,6 +100,14 @@ class SimulatedActuators {
   /// non-finite t is ignored; before the first time seen it starts the clock, as update().
   void rebase(double t);
 
+  /// Replaces the limits and the watchdog's timeout at time t [s] (after advancing to t), as
+  /// dynamic_reconfigure asks: set-points beyond a lowered limit are clamped to it, and a velocity
+  /// beyond it ramps down at the new acceleration limit, never jumps. The watchdog deadline moves
+  /// with the timeout (last accepted command + the new timeout).
+  /// @throw std::invalid_argument, with nothing changed, as the constructor for limits and timeout,
+  ///        or if an actuator's kind would change.
+  void setLimits(const std::vector<ActuatorLimits>& limits, double command_timeout, double t);
+
   /// Engages (stop(t), then every command is rejected) or releases the e-stop latch. Releasing
   /// leaves the actuators at rest; they move again on the next accepted command.
   void setEStop(bool engaged, double t);
@@ -142,6 +150,9 @@ class SimulatedActuators {
     double value;  ///< clamped set-point [rad/s]
   };
 
+  /// @throw std::invalid_argument naming the actuator and the value unless there is one entry
+  ///        per actuator, of its kind, with every limit and the timeout finite and > 0.
+  void requireValidLimits(const std::vector<ActuatorLimits>& limits, double command_timeout) const;
   /// Advances velocities and positions by dt [s] >= 0 towards the active set-points.
   void integrate(double dt);
   /// Effort actuators without lag apply their active set-point at once.

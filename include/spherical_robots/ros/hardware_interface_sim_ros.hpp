@@ -4,12 +4,14 @@
 // out; every rule about limits, the watchdog and the e-stop lives in the core class.
 
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <dynamic_reconfigure/server.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/Bool.h>
 
 #include <memory>
 
+#include "spherical_robots/HardwareInterfaceSimConfig.h"
 #include "spherical_robots/config/hardware_interface_config.hpp"
 #include "spherical_robots/core/clock_jump.hpp"
 #include "spherical_robots/hardware/simulated_actuators.hpp"
@@ -40,6 +42,10 @@ class HardwareInterfaceSimRos {
   /// Rebases the actuators when ROS time jumped (a stray /clock, a replay looping back).
   void followClock(const ros::Time& now);
   void publishState(const ros::Time& stamp);
+  /// dynamic_reconfigure (cfg/HardwareInterfaceSim.cfg): the velocity actuators' limits and the
+  /// watchdog's timeout, checked as at start-up; a refused change keeps the last good values and
+  /// hands them back in config.
+  void onReconfigure(spherical_robots::HardwareInterfaceSimConfig& config, std::uint32_t level);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   config::HardwareInterfaceSimParameters parameters_;
@@ -56,6 +62,10 @@ class HardwareInterfaceSimRos {
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
   bool reported_timeout_ = false;
+  std::string reconfigure_problem_;  ///< why the last refused reconfiguration was refused
+  /// Last member: its first callback applies the values on the parameter server to the actuators.
+  std::unique_ptr<dynamic_reconfigure::Server<spherical_robots::HardwareInterfaceSimConfig>>
+      reconfigure_;
 };
 
 }  // namespace spherical_robots
