@@ -554,6 +554,48 @@ class NormaCheck(StackFixture):
         self.assertTrue(all(math.isfinite(v) for v in self.norma_states.last().q))
 
 
+    def test_04_gains_reconfigured_mid_run(self):
+        """dynamic_reconfigure mid-run (cfg/NormaController.cfg): PID2's gains set to 0 make every
+        later torque command exactly 0 (T = kp e + ki integral - kd beta_dot, nothing else), the
+        loaded gains back make it non-zero again; a non-finite gain is refused and the last good
+        gains are handed back."""
+        from dynamic_reconfigure.client import Client
+        client = Client('norma_controller', timeout=30.0)
+        commands = Recorder('actuators/command', JointState)
+        loaded = client.get_configuration(timeout=10.0)
+        pid2 = {k: loaded[k] for k in ('pendulum_kp', 'pendulum_ki', 'pendulum_kd')}
+        self.assertEqual(pid2, {'pendulum_kp': float(rospy.get_param('norma_controller/gains/pendulum/kp')),
+                                'pendulum_ki': float(rospy.get_param('norma_controller/gains/pendulum/ki')),
+                                'pendulum_kd': float(rospy.get_param('norma_controller/gains/pendulum/kd'))},
+                         'the server must start from the gains the node loaded')
+
+        def torques_between(start, end):
+            wait_until(lambda: commands.count() and
+                       commands.last().header.stamp.to_sec() >= end, 'commands up to %.1f s' % end)
+            return [dict(zip(m.name, m.effort))['pendulum_motor'] for m in commands.since(0)
+                    if start <= m.header.stamp.to_sec() <= end]
+
+        try:
+            client.update_configuration({k: 0.0 for k in pid2})
+            # Commands stamped a little after this node's clock are surely after the change.
+            zeroed = rospy.Time.now().to_sec() + 0.1
+            torques = torques_between(zeroed, zeroed + 1.0)
+            self.assertGreater(len(torques), 100)
+            self.assertEqual(set(torques), {0.0}, 'torques commanded with PID2 at zero')
+
+            kept = client.update_configuration({'pendulum_kp': float('nan')})
+            self.assertEqual(kept['pendulum_kp'], 0.0, 'a NaN gain must be refused, 0 kept')
+            wait_until(lambda: 'PID2 kp' in (self.diagnostic_value(
+                           'norma_controller: norma controller', 'last refused reconfiguration')
+                           or ''),
+                       'diagnostics to name the refused gain')
+        finally:
+            client.update_configuration(pid2)
+        restored = rospy.Time.now().to_sec() + 0.1
+        self.assertTrue(any(t != 0.0 for t in torques_between(restored, restored + 1.0)),
+                        'torques with the loaded PID2 gains back')
+
+
 class SmoothnessCheck(StackFixture):
     """mode:=smoothness: issue 13's criteria on the set-points the controller sends (the default,
     smooth law): after 40 s of simulated time, until ~until [s] (100), consecutive

@@ -164,4 +164,9 @@ ControlOutput NormaController::compute(const Vector4& q, const Vector4& qd, doub
   return out;
 }
 
+void NormaController::setGains(const ControllerGains& gains) {
+  validate(gains);
+  gains_ = gains;
+}
+
 }  // namespace spherical_robots::norma

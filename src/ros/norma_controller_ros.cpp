@@ -26,7 +26,52 @@ constexpr double kPathPeriod = 200.0 * M_PI;  // [s] eq 52 repeats after 2π / 0
 constexpr int kDesiredPathSamples = 2000;
 constexpr double kLateAge = 0.002;           // [s] two 1 ms ticks: the delay the 1 kHz loop is built for
 
+using GainsConfig = spherical_robots::NormaControllerConfig;
+
+/// Where each reconfigurable gain lives in the config and in norma::ControllerGains.
+struct GainField {
+  double GainsConfig::*config;
+  double& (*gain)(norma::ControllerGains&);
+};
+
+// clang-format off
+const GainField kGainFields[] = {
+  {&GainsConfig::kinematic_k1, [](norma::ControllerGains& g) -> double& { return g.kinematic.k1; }},
+  {&GainsConfig::kinematic_k2, [](norma::ControllerGains& g) -> double& { return g.kinematic.k2; }},
+  {&GainsConfig::kinematic_k3, [](norma::ControllerGains& g) -> double& { return g.kinematic.k3; }},
+  {&GainsConfig::rate_kp, [](norma::ControllerGains& g) -> double& { return g.rate.kp; }},
+  {&GainsConfig::rate_ki, [](norma::ControllerGains& g) -> double& { return g.rate.ki; }},
+  {&GainsConfig::pendulum_kp, [](norma::ControllerGains& g) -> double& { return g.pendulum.kp; }},
+  {&GainsConfig::pendulum_ki, [](norma::ControllerGains& g) -> double& { return g.pendulum.ki; }},
+  {&GainsConfig::pendulum_kd, [](norma::ControllerGains& g) -> double& { return g.pendulum.kd; }},
+  {&GainsConfig::slider_kp, [](norma::ControllerGains& g) -> double& { return g.slider.kp; }},
+  {&GainsConfig::slider_ki, [](norma::ControllerGains& g) -> double& { return g.slider.ki; }},
+  {&GainsConfig::slider_kd, [](norma::ControllerGains& g) -> double& { return g.slider.kd; }},
+  {&GainsConfig::tracking_slider_kp, [](norma::ControllerGains& g) -> double& { return g.tracking_slider.kp; }},
+  {&GainsConfig::tracking_slider_ki, [](norma::ControllerGains& g) -> double& { return g.tracking_slider.ki; }},
+  {&GainsConfig::tracking_slider_kd, [](norma::ControllerGains& g) -> double& { return g.tracking_slider.kd; }},
+  {&GainsConfig::along_gain, [](norma::ControllerGains& g) -> double& { return g.along_gain; }},
+  {&GainsConfig::cross_gain, [](norma::ControllerGains& g) -> double& { return g.cross_gain; }},
+  {&GainsConfig::heading_gain, [](norma::ControllerGains& g) -> double& { return g.heading_gain; }},
+  {&GainsConfig::tilt_gain, [](norma::ControllerGains& g) -> double& { return g.tilt_gain; }},
+  {&GainsConfig::tilt_damping, [](norma::ControllerGains& g) -> double& { return g.tilt_damping; }},
+  {&GainsConfig::max_slider, [](norma::ControllerGains& g) -> double& { return g.max_slider; }},
+};
+// clang-format on
+
 }  // namespace
+
+GainsConfig reconfigureConfigOf(const norma::ControllerGains& gains) {
+  GainsConfig config = GainsConfig::__getDefault__();
+  norma::ControllerGains copy = gains;
+  for (const GainField& field : kGainFields) config.*field.config = field.gain(copy);
+  return config;
+}
+
+norma::ControllerGains gainsOf(const GainsConfig& config, norma::ControllerGains base) {
+  for (const GainField& field : kGainFields) field.gain(base) = config.*field.config;
+  return base;
+}
 
 NormaControllerParameters loadNormaControllerParameters(const config::ParameterSource& node) {
   NormaControllerParameters p;
@@ -61,9 +106,26 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.add("norma controller", this, &NormaControllerRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
   work_.join(nh, pnh, {state_sub_, actuator_sub_});
+  // The server starts from the gains loaded above (config/norma.yaml), not from the .cfg's.
+  reconfigure_ = std::make_unique<dynamic_reconfigure::Server<GainsConfig>>(pnh);
+  reconfigure_->updateConfig(reconfigureConfigOf(parameters_.gains));
+  reconfigure_->setCallback(
+      [this](GainsConfig& config, std::uint32_t level) { onReconfigure(config, level); });
   ROS_INFO_STREAM("Norma controller: "
                   << norma::toString(controller().kind())
                   << ", path eq 52 from the first state on " << input_.topic());
+}
+
+void NormaControllerRos::onReconfigure(GainsConfig& config, std::uint32_t /*level*/) {
+  try {
+    loop_.setGains(gainsOf(config, controller().gains()));
+  } catch (const std::invalid_argument& e) {
+    reconfigure_problem_ = e.what();
+    ROS_ERROR_STREAM("norma_controller: reconfiguration refused, the last good gains kept: "
+                     << e.what());
+    config = reconfigureConfigOf(controller().gains());
+    updater_.force_update();
+  }
 }
 
 void NormaControllerRos::onActuatorState(const sensor_msgs::JointState& msg) {
@@ -132,6 +194,8 @@ void NormaControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& s
   status.add("integrals held (actuators stopped)", loop_.actuatorsStopped());
   status.add("max state age at command [ms]", max_state_age_ * 1e3);
   status.add("late commands (> 2 ms)", late_commands_);
+  status.add("last refused reconfiguration",
+             reconfigure_problem_.empty() ? std::string("none") : reconfigure_problem_);
   if (max_state_age_ > kLateAge)
     status.mergeSummary(diagnostic_msgs::DiagnosticStatus::WARN, "commands late: lower the speed-up");
   max_state_age_ = 0.0;

@@ -68,6 +68,9 @@ class NormaControlLoop {
   const Eigen::Vector3d& integrals() const { return integrals_; }
   const ControlOutput& lastOutput() const { return last_output_; }
   const NormaController& controller() const { return controller_; }
+  /// New gains from the next step on; the integrals and the path clock go on.
+  /// @throw std::invalid_argument as norma::validate(), with the gains unchanged.
+  void setGains(const ControllerGains& gains) { controller_.setGains(gains); }
   const EffortLimits& limits() const { return limits_; }
   bool started() const { return started_; }
 

@@ -124,6 +124,9 @@ class NormaController {
 
   ControllerKind kind() const { return kind_; }
   const ControllerGains& gains() const { return gains_; }
+  /// New gains from the next compute() on (dynamic_reconfigure).
+  /// @throw std::invalid_argument as validate(), with the gains unchanged.
+  void setGains(const ControllerGains& gains);
 
   /// T, F and the integrands at plant state (q, q̇, X, Y, ψ) with the controller's integrals
   /// and the desired path point.

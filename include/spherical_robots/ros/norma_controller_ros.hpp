@@ -4,10 +4,13 @@
 // hardware interface's effort actuators.
 
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <dynamic_reconfigure/server.h>
 #include <ros/ros.h>
 
 #include <Eigen/Core>
+#include <memory>
 
+#include "spherical_robots/NormaControllerConfig.h"
 #include "spherical_robots/NormaState.h"
 #include <sensor_msgs/JointState.h>
 
@@ -33,6 +36,12 @@ struct NormaControllerParameters {
 /// @throw std::invalid_argument naming the parameter, its value and its limit.
 NormaControllerParameters loadNormaControllerParameters(const config::ParameterSource& node);
 
+/// The gains as dynamic_reconfigure shows them (cfg/NormaController.cfg), and back: every
+/// reconfigurable gain of `base` replaced by the config's.
+spherical_robots::NormaControllerConfig reconfigureConfigOf(const norma::ControllerGains& gains);
+norma::ControllerGains gainsOf(const spherical_robots::NormaControllerConfig& config,
+                               norma::ControllerGains base);
+
 /// Norma's two-layer controller in a stack (eqs 48-51 and the PID cascade of Fig. 5, or this
 /// project's tracking controller) on the plant's state, commanding the pendulum torque and the
 /// slider force (docs/nodes.md, "norma_controller"). The loop is real time: nothing waits for the
@@ -52,6 +61,9 @@ class NormaControllerRos {
   void onActuatorState(const sensor_msgs::JointState& msg);
   const norma::NormaController& controller() const { return loop_.controller(); }
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+  /// dynamic_reconfigure: new gains through norma::validate, as at start-up; a refused change
+  /// keeps the last good gains and hands them back in config.
+  void onReconfigure(spherical_robots::NormaControllerConfig& config, std::uint32_t level);
 
   NormaControllerParameters parameters_;
   norma::NormaParameters robot_;
@@ -72,6 +84,8 @@ class NormaControllerRos {
   ros::Publisher desired_path_pub_;
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
+  std::string reconfigure_problem_;   ///< why the last refused reconfiguration was refused
+  std::unique_ptr<dynamic_reconfigure::Server<spherical_robots::NormaControllerConfig>> reconfigure_;
 };
 
 }  // namespace spherical_robots
