@@ -598,6 +598,24 @@ TEST(SimulatedActuatorModels, NoiseIsReproducibleGaussianAndLeavesTheTrueStateAl
 
 // Explicit all-off models reproduce the ideal actuator bit for bit (and its closed forms), and
 // the measurement is the true state.
+// dynamic_reconfigure's server applies the start-up limits before the first update: that must
+// not start the clock or draw noise, or the run would differ from its batch twin.
+TEST(SimulatedActuatorModels, LimitsSetBeforeTheClockStartsDrawNoNoise) {
+  ActuatorModel noisy;
+  noisy.velocity_noise = 0.05;
+  const auto make = [&] {
+    return SimulatedActuators({"theta"}, {{10.0, 20.0}}, 100.0, {noisy}, 7);
+  };
+  SimulatedActuators plain = make();
+  SimulatedActuators reconfigured = make();
+  reconfigured.setLimits(reconfigured.limits(), 100.0, 0.0);
+  for (double t : {0.0, 0.01, 0.02, 0.03}) {
+    plain.update(t);
+    reconfigured.update(t);
+    EXPECT_EQ(plain.measuredVelocities()[0], reconfigured.measuredVelocities()[0]) << t;
+  }
+}
+
 TEST(SimulatedActuatorModels, AllOffIsTheIdealActuatorExactly) {
   for (double dt : {0.001, 0.0137, 0.1, 0.4}) {
     auto ideal = makeActuators(10.0, 20.0, 0.5);

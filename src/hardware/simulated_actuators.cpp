@@ -95,7 +95,9 @@ void SimulatedActuators::requireValidLimits(const std::vector<ActuatorLimits>& l
 void SimulatedActuators::setLimits(const std::vector<ActuatorLimits>& limits,
                                    double command_timeout, double t) {
   requireValidLimits(limits, command_timeout);
-  update(t);
+  // Before the clock starts there is nothing to integrate, and starting it here would draw the
+  // measurement noise once more than a run without the change.
+  if (clock_started_) update(t);
   limits_ = limits;
   command_timeout_ = command_timeout;
   // Set-points beyond a lowered limit are clamped as a new command would be; a velocity above

@@ -180,6 +180,16 @@ void HardwareInterfaceSimRos::onReconfigure(spherical_robots::HardwareInterfaceS
     l.max_velocity = config.max_velocity;
     l.max_acceleration = config.max_acceleration;
   }
+  const bool unchanged =
+      config.command_timeout == actuators_.commandTimeout() &&
+      std::equal(limits.begin(), limits.end(), actuators_.limits().begin(),
+                 [](const hardware::ActuatorLimits& a, const hardware::ActuatorLimits& b) {
+                   return a.max_velocity == b.max_velocity &&
+                          a.max_acceleration == b.max_acceleration;
+                 });
+  // The server's first call hands back the start-up values: applying them would be no change
+  // but an extra update, which a run compared with its batch twin must not have.
+  if (unchanged) return;
   const ros::Time now = this->now();
   followClock(now);
   try {
