@@ -608,8 +608,8 @@ TEST(SimulatedActuatorModels, LimitsSetBeforeTheClockStartsDrawNoNoise) {
   };
   SimulatedActuators plain = make();
   SimulatedActuators reconfigured = make();
-  reconfigured.setLimits(reconfigured.limits(), 100.0, 0.0);
-  for (double t : {0.0, 0.01, 0.02, 0.03}) {
+  reconfigured.setLimits(reconfigured.limits(), 100.0, 0.0);  // the clock starts at 0.01 in both
+  for (double t : {0.01, 0.02, 0.03}) {
     plain.update(t);
     reconfigured.update(t);
     EXPECT_EQ(plain.measuredVelocities()[0], reconfigured.measuredVelocities()[0]) << t;
