@@ -629,9 +629,32 @@ class HeightMapCheck(StackFixture):
         assert_tracking(self, Recorder('tracking_error', TrackingError))
 
 
+class OffMapCheck(StackFixture):
+    """mode:=off_map (teleop on a height map, starting short of its +x edge ~edge [m]): driven
+    off the map, the plant refuses every step that would leave it, holds its last state on the
+    map, counts the failed steps on /diagnostics and goes on publishing."""
+
+    def failed_steps(self):
+        return int(self.diagnostic_value(PLANT_STATUS, 'integration failures') or 0)
+
+    def test_01_held_at_the_edge(self):
+        edge = float(rospy.get_param('~edge'))
+        publish_until(rospy.Publisher('cmd_vel', Twist, queue_size=10),
+                      [Twist(linear=Vector3(x=0.2))], lambda: self.failed_steps() > 0,
+                      'the plant to report failed steps on /diagnostics')
+        reached = max(m.contact_point.x for m in self.states.since(0))
+        rospy.loginfo('off the map: the contact point reached x = %.4f m, the edge is at %g m',
+                      reached, edge)
+        self.assertLessEqual(reached, edge)
+        self.assertGreater(reached, edge - 0.05)
+        self.assert_nodes_alive()
+        self.assert_still_publishing([self.odom, self.states])
+
+
 if __name__ == '__main__':
     rospy.init_node(NAME)
     mode = rospy.get_param('~mode', 'tracking')
     rostest.rosrun(PKG, NAME, {'teleop': TeleopCheck, 'seam': SeamCheck, 'roller': RollerCheck,
                                'norma': NormaCheck, 'height_map': HeightMapCheck,
+                               'off_map': OffMapCheck,
                                'smoothness': SmoothnessCheck}.get(mode, TrackingCheck))
