@@ -18,6 +18,8 @@ packages=(
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
   # core libraries (liburdfdom-dev: urdf_parser/urdf_parser.h, linked directly; no ROS urdf)
   libeigen3-dev liburdfdom-dev libboost-dev libyaml-cpp-dev
+  # height maps: 16-bit PNG (src/config/height_map_files.cpp)
+  libpng-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev googletest libbenchmark-dev librostest-dev python3-rostest
   # running stacks, bags, plots, rviz

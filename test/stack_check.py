@@ -25,6 +25,7 @@ from geometry_msgs.msg import Twist, Vector3
 from nav_msgs.msg import Odometry, Path
 from sensor_msgs.msg import JointState
 from std_msgs.msg import Bool
+from visualization_msgs.msg import Marker
 
 from spherical_robots.msg import NormaState, RollerDrive, TerrainState, TrackingError
 import spherical_robots_testing as testing
@@ -83,12 +84,16 @@ def batch_window():
     out = '/tmp/stack_check_batch_%d.csv' % os.getpid()
     # The roller stack loads config/roller.yaml (roller/...) into its namespace.
     stack = 'roller' if rospy.has_param('roller') else 'terrain'
+    # A height map (terrain:= or config/terrain.yaml), relative to the package's directory.
+    surface = rospy.get_param('terrain/surface')
+    terrain = (['--terrain', os.path.join(rospkg.RosPack().get_path(PKG), surface['height_map'])]
+               if surface['type'] == 'height_map' else [])
     subprocess.run([roslib.packages.find_node(PKG, 'sphere_sim')[0], 'terrain', '--loop', 'sampled',
                     '--stack', stack,
                     '--robot', controller['robot_type'], '--path', controller['path'],
                     '--law', controller['law'], '--model', plant['contact_model'],
                     '--duration', '%g' % SETTLE[1], '--log-rate', '50',
-                    '--config', rospkg.RosPack().get_path(PKG), '--out', out] +
+                    '--config', rospkg.RosPack().get_path(PKG), '--out', out] + terrain +
                    (['--actuator-models', rospy.get_param('~actuator_models')]
                     if rospy.has_param('~actuator_models') else []),
                    check=True, stdout=subprocess.DEVNULL)
@@ -643,9 +648,55 @@ class SmoothnessCheck(StackFixture):
         self.assertLessEqual(worst, 1.0)
 
 
+class HeightMapCheck(StackFixture):
+    """mode:=height_map: the stack on a height map (terrain:=FILE.yaml) draws the map's extent
+    as the terrain mesh, names the map on /diagnostics and tracks as the batch run on the same
+    map (~batch)."""
+
+    def test_01_mesh_covers_the_map(self):
+        mesh = rospy.wait_for_message('terrain_marker', Marker, timeout=30.0)
+        xs, ys = [p.x for p in mesh.points], [p.y for p in mesh.points]
+        extent = [float(v) for v in rospy.get_param('~extent')]  # x_min, x_max, y_min, y_max
+        for got, want in zip((min(xs), max(xs), min(ys), max(ys)), extent):
+            self.assertAlmostEqual(got, want, delta=1e-9)
+
+    def test_02_diagnostics_name_the_map(self):
+        wait_until(lambda: self.diagnostic_value(PLANT_STATUS, 'surface') is not None,
+                   'the plant\'s surface on /diagnostics')
+        surface = rospy.get_param('terrain/surface/height_map')
+        image = os.path.join(os.path.dirname(surface), 'hills.png')
+        self.assertIn('height map ' + image, self.diagnostic_value(PLANT_STATUS, 'surface'))
+
+    def test_03_tracks_as_the_batch_run(self):
+        assert_tracking(self, Recorder('tracking_error', TrackingError))
+
+
+class OffMapCheck(StackFixture):
+    """mode:=off_map (teleop on a height map, starting short of its +x edge ~edge [m]): driven
+    off the map, the plant refuses every step that would leave it, holds its last state on the
+    map, counts the failed steps on /diagnostics and goes on publishing."""
+
+    def failed_steps(self):
+        return int(self.diagnostic_value(PLANT_STATUS, 'integration failures') or 0)
+
+    def test_01_held_at_the_edge(self):
+        edge = float(rospy.get_param('~edge'))
+        publish_until(rospy.Publisher('cmd_vel', Twist, queue_size=10),
+                      [Twist(linear=Vector3(x=0.2))], lambda: self.failed_steps() > 0,
+                      'the plant to report failed steps on /diagnostics')
+        reached = max(m.contact_point.x for m in self.states.since(0))
+        rospy.loginfo('off the map: the contact point reached x = %.4f m, the edge is at %g m',
+                      reached, edge)
+        self.assertLessEqual(reached, edge)
+        self.assertGreater(reached, edge - 0.05)
+        self.assert_nodes_alive()
+        self.assert_still_publishing([self.odom, self.states])
+
+
 if __name__ == '__main__':
     rospy.init_node(NAME)
     mode = rospy.get_param('~mode', 'tracking')
     rostest.rosrun(PKG, NAME, {'teleop': TeleopCheck, 'seam': SeamCheck, 'roller': RollerCheck,
-                               'norma': NormaCheck,
+                               'norma': NormaCheck, 'height_map': HeightMapCheck,
+                               'off_map': OffMapCheck,
                                'smoothness': SmoothnessCheck}.get(mode, TrackingCheck))

@@ -369,6 +369,63 @@ TEST_F(SphereSimTest, SampledLoopRunsAtTheStacksStepsAndStartsWhereTheContinuous
   EXPECT_NE(bad.err.find("--loop"), std::string::npos) << bad.err;
 }
 
+/// A height map of eq 59 sampled every 0.1 m over [-e, e]^2 as a CSV grid (first line the +y edge,
+/// every digit kept) and its YAML, in dir; returns the YAML's path.
+fs::path writeEq59Map(const fs::path& dir, double half_extent, const std::string& name) {
+  const int n = static_cast<int>(std::lround(2 * half_extent / 0.1)) + 1;
+  std::ofstream csv(dir / (name + ".csv"));
+  csv.precision(17);
+  for (int row = 0; row < n; ++row) {
+    for (int column = 0; column < n; ++column) {
+      csv << (column ? "," : "") << surfaceHeight(-half_extent + 0.1 * column,
+                                                  half_extent - 0.1 * row);
+    }
+    csv << "\n";
+  }
+  std::ofstream yaml(dir / (name + ".yaml"));
+  yaml << "csv: " << name << ".csv\nresolution: 0.1\norigin: [" << -half_extent - 0.05 << ", "
+       << -half_extent - 0.05 << "]\n";
+  return dir / (name + ".yaml");
+}
+
+TEST_F(SphereSimTest, TerrainOptionRunsOnAHeightMapAsOnItsAnalyticSurface) {
+  // test_height_map_tracking's bound, through the command line: every logged contact point of
+  // the run on eq 59 sampled every 0.1 m is within 2e-5 m of the run on eq 59.
+  const std::vector<std::string> args = {"--robot", "RS", "--path", "circle", "--law", "smooth",
+                                         "--duration", "60"};
+  ASSERT_EQ(terrain(args).status, 0);
+  const Csv analytic = readCsv(out_);
+  std::vector<std::string> on_map = args;
+  on_map.insert(on_map.end(), {"--terrain", writeEq59Map(dir_, 3.5, "eq59").string()});
+  const Process process = terrain(on_map);
+  ASSERT_EQ(process.status, 0) << process.err;
+  EXPECT_EQ(process.err, "");
+  const Csv mapped = readCsv(out_);
+  ASSERT_EQ(mapped.rows.size(), analytic.rows.size());
+  for (std::size_t row = 0; row < mapped.rows.size(); ++row) {
+    const double gap = std::hypot(std::hypot(mapped.at(row, "x0") - analytic.at(row, "x0"),
+                                             mapped.at(row, "y0") - analytic.at(row, "y0")),
+                                  mapped.at(row, "z0") - analytic.at(row, "z0"));
+    ASSERT_LT(gap, 2e-5) << "t = " << mapped.at(row, "t");
+  }
+  fs::remove(out_);
+
+  // A map the circle leaves: exit 4, the point and the map named, no output.
+  on_map.back() = writeEq59Map(dir_, 1.5, "small").string();
+  const Process off = terrain(on_map);
+  EXPECT_EQ(off.status, cli::kInvalidInput);
+  EXPECT_NE(off.err.find("off the height map"), std::string::npos) << off.err;
+  EXPECT_NE(off.err.find("small.csv"), std::string::npos) << off.err;
+  fs::remove(dir_ / "eq59.csv");
+  fs::remove(dir_ / "eq59.yaml");
+  fs::remove(dir_ / "small.csv");
+  fs::remove(dir_ / "small.yaml");
+  expectNoOutputFiles();
+  const Process missing = terrain({"--robot", "3R", "--path", "circle", "--terrain", "nowhere.yaml"});
+  EXPECT_EQ(missing.status, cli::kInvalidInput);
+  EXPECT_NE(missing.err.find("nowhere.yaml"), std::string::npos) << missing.err;
+}
+
 class SphereSimRobotTest : public SphereSimTest,
                            public ::testing::WithParamInterface<const char*> {};
 

@@ -84,6 +84,7 @@ void expectDocumentedScenario(const TerrainConfig& c) {
 TEST(TerrainConfig, ShippedFileGivesThePapersScenarioAndTheDocumentedGains) {
   const TerrainConfig c = loadTerrainConfig(YamlParameterSource(kShipped));
   expectDocumentedScenario(c);
+  EXPECT_EQ(c.surface.height_map, "maps/hills.yaml");  // the example map, for type height_map
   EXPECT_EQ(c.gains.size(), 4u);
   expectDocumentedGains(c);
 }
@@ -279,6 +280,13 @@ TEST(ActuatorModels, ShippedRealisticFileAndEveryRuleOfTheReader) {
   }
 }
 
+TEST(TerrainConfig, HeightMapTypeReadsTheMapsFile) {
+  const TerrainConfig c =
+      loadText("terrain:\n  surface:\n    type: height_map\n    height_map: /maps/site.yaml\n");
+  EXPECT_EQ(c.surface.type, "height_map");
+  EXPECT_EQ(c.surface.height_map, "/maps/site.yaml");
+}
+
 TEST(MakeSurface, BuildsTheNamedSurfaceAndRejectsUnknownNames) {
   SurfaceSpec spec;  // cosine, a = 0.2, w = 2
   const auto cosine = makeSurface(spec);
@@ -297,7 +305,7 @@ TEST(MakeSurface, BuildsTheNamedSurfaceAndRejectsUnknownNames) {
 
   for (const char* bad : {"bumpy", "Cosine"}) {
     spec.type = bad;
-    EXPECT_INVALID_ARGUMENT(makeSurface(spec), bad);
+    EXPECT_INVALID_ARGUMENT(makeSurface(spec), bad, "height_map");
   }
   spec.type = "";
   EXPECT_THROW(makeSurface(spec), std::invalid_argument);

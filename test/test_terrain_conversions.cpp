@@ -2,12 +2,14 @@
 // without a master.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "expect_invalid_argument.hpp"
 #include "spherical_robots/ros/terrain_conversions.hpp"
+#include "spherical_robots/terrain/height_map_surface.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/surface.hpp"
 #include "spherical_robots/terrain/tangent_frame.hpp"
@@ -165,7 +167,8 @@ TEST(Visualisation, SampledPathClosesOnTheSurface) {
 
 TEST(Visualisation, SurfaceMeshCoversTheSquare) {
   const sr::terrain::CosineSurface surface(0.2, 2.0);
-  const auto mesh = conv::surfaceMesh(surface, 3.0, 0.1, "world", ros::Time(1.0));
+  const Eigen::AlignedBox2d square(Eigen::Vector2d(-3.0, -3.0), Eigen::Vector2d(3.0, 3.0));
+  const auto mesh = conv::surfaceMesh(surface, square, 0.1, "world", ros::Time(1.0));
   EXPECT_EQ(mesh.type, visualization_msgs::Marker::TRIANGLE_LIST);
   ASSERT_EQ(mesh.points.size(), 60u * 60u * 6u);
   EXPECT_EQ(mesh.colors.size(), mesh.points.size());
@@ -174,8 +177,33 @@ TEST(Visualisation, SurfaceMeshCoversTheSquare) {
     EXPECT_LE(std::abs(p.y), 3.0 + 1e-12);
     EXPECT_NEAR(p.z, surface.height(p.x, p.y), 1e-12);
   }
-  EXPECT_THROW(conv::surfaceMesh(surface, 3.0, 0.0, "world", {}), std::invalid_argument);
-  EXPECT_THROW(conv::surfaceMesh(surface, 3.0, 1e-4, "world", {}), std::invalid_argument);
+  EXPECT_THROW(conv::surfaceMesh(surface, square, 0.0, "world", {}), std::invalid_argument);
+  EXPECT_THROW(conv::surfaceMesh(surface, square, 1e-4, "world", {}), std::invalid_argument);
+  EXPECT_THROW(conv::surfaceMesh(surface, Eigen::AlignedBox2d(), 0.1, "world", {}),
+               std::invalid_argument);
+}
+
+TEST(Visualisation, SurfaceMeshOfAHeightMapSpansItsExtent) {
+  // A 1.2 m x 0.8 m map: the mesh reaches every edge and never leaves the map, whose surface
+  // refuses any point off it.
+  sr::terrain::HeightGrid grid;
+  grid.spacing = 0.1;
+  grid.first_sample = {0.5, -0.4};
+  grid.source = "test grid";
+  grid.heights = Eigen::MatrixXd::Random(13, 9) * 0.01;
+  const sr::terrain::HeightMapSurface map(grid);
+  const auto mesh = conv::surfaceMesh(map, *map.domain(), 0.25, "world", ros::Time(1.0));
+  ASSERT_EQ(mesh.points.size(), 5u * 4u * 6u);  // ceil(1.2 / 0.25) x ceil(0.8 / 0.25) cells
+  double x_min = 1e9, x_max = -1e9, y_min = 1e9, y_max = -1e9;
+  for (const auto& p : mesh.points) {
+    x_min = std::min(x_min, p.x), x_max = std::max(x_max, p.x);
+    y_min = std::min(y_min, p.y), y_max = std::max(y_max, p.y);
+    EXPECT_NEAR(p.z, map.height(p.x, p.y), 1e-12);
+  }
+  EXPECT_NEAR(x_min, 0.5, 1e-12);
+  EXPECT_NEAR(x_max, 1.7, 1e-12);
+  EXPECT_NEAR(y_min, -0.4, 1e-12);
+  EXPECT_NEAR(y_max, 0.4, 1e-12);
 }
 
 int main(int argc, char** argv) {

@@ -1,9 +1,14 @@
 #include "spherical_robots/config/terrain_config.hpp"
 
+#include <filesystem>
 #include <initializer_list>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
+
+#include "spherical_robots/config/height_map_loader.hpp"
+#include "spherical_robots/config/robot_description.hpp"
+#include "spherical_robots/terrain/height_map_surface.hpp"
 
 namespace spherical_robots::config {
 namespace {
@@ -75,6 +80,7 @@ TerrainConfig loadTerrainConfig(const ParameterSource& source) {
   surface.slope_x = finiteNumber(source, kRoot + "surface/slope_x", surface.slope_x);
   surface.slope_y = finiteNumber(source, kRoot + "surface/slope_y", surface.slope_y);
   surface.offset = finiteNumber(source, kRoot + "surface/offset", surface.offset);
+  surface.height_map = source.text(kRoot + "surface/height_map").value_or(surface.height_map);
   config.circle_radius = finiteNumber(source, kRoot + "paths/circle/radius", config.circle_radius);
   config.circle_angular_rate =
       finiteNumber(source, kRoot + "paths/circle/angular_rate", config.circle_angular_rate);
@@ -110,7 +116,8 @@ std::unique_ptr<terrain::PursuitController> makePursuitController(terrain::Pursu
                                                             radius, config.tilt_limit);
 }
 
-std::unique_ptr<terrain::Surface> makeSurface(const SurfaceSpec& spec) {
+std::unique_ptr<terrain::Surface> makeSurface(const SurfaceSpec& spec,
+                                              const SurfaceLoading& loading) {
   if (spec.type == "cosine") {
     return std::make_unique<terrain::CosineSurface>(spec.amplitude, spec.frequency);
   }
@@ -118,8 +125,23 @@ std::unique_ptr<terrain::Surface> makeSurface(const SurfaceSpec& spec) {
   if (spec.type == "tilted_plane") {
     return std::make_unique<terrain::PlaneSurface>(spec.slope_x, spec.slope_y, spec.offset);
   }
+  if (spec.type == "height_map") {
+    if (spec.height_map.empty())
+      throw std::invalid_argument("surface type height_map needs the map's YAML file (height_map)");
+    std::filesystem::path path(spec.height_map);
+    if (path.is_relative()) {
+      path = std::filesystem::path(loading.base_directory.empty() ? packageShareDirectory()
+                                                                  : loading.base_directory) /
+             path;
+    }
+    LoadedHeightMap map = loadHeightMap(path.string());
+    if (loading.warn) {
+      for (const std::string& warning : map.warnings) loading.warn(warning);
+    }
+    return std::make_unique<terrain::HeightMapSurface>(std::move(map.grid));
+  }
   throw std::invalid_argument("unknown surface type '" + spec.type +
-                              "' (expected cosine, plane or tilted_plane)");
+                              "' (expected cosine, plane, tilted_plane or height_map)");
 }
 
 std::unique_ptr<terrain::ReferencePath> makePath(const std::string& name,

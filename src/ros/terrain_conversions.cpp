@@ -113,23 +113,31 @@ nav_msgs::Path sampledPath(const terrain::ReferencePath& path, const terrain::Su
   return msg;
 }
 
-visualization_msgs::Marker surfaceMesh(const terrain::Surface& surface, double half_extent,
-                                       double resolution, const std::string& frame,
-                                       const ros::Time& stamp) {
+visualization_msgs::Marker surfaceMesh(const terrain::Surface& surface,
+                                       const Eigen::AlignedBox2d& area, double resolution,
+                                       const std::string& frame, const ros::Time& stamp) {
   constexpr double kMaxCells = 1000.0;
-  if (!(half_extent > 0.0) || !(resolution > 0.0) || !std::isfinite(half_extent) ||
-      !std::isfinite(resolution) || 2.0 * half_extent / resolution > kMaxCells) {
+  const Eigen::Vector2d size = area.sizes();
+  if (!(resolution > 0.0) || !std::isfinite(resolution) || !area.min().allFinite() ||
+      !area.max().allFinite() || !(size.minCoeff() > 0.0) ||
+      size.maxCoeff() / resolution > kMaxCells) {
     std::ostringstream what;
-    what << "surfaceMesh: half_extent = " << half_extent << " m and resolution = " << resolution
-         << " m must be positive, finite and give at most " << kMaxCells << " cells a side";
+    what << "surfaceMesh: the area [" << area.min().transpose() << "] - [" << area.max().transpose()
+         << "] m and resolution = " << resolution
+         << " m must be non-empty, positive, finite and give at most " << kMaxCells
+         << " cells a side";
     throw std::invalid_argument(what.str());
   }
-  const int cells = static_cast<int>(std::ceil(2.0 * half_extent / resolution));
-  const double spacing = 2.0 * half_extent / cells;
-  Eigen::MatrixXd height(cells + 1, cells + 1);
-  for (int i = 0; i <= cells; ++i) {
-    for (int j = 0; j <= cells; ++j) {
-      height(i, j) = surface.height(-half_extent + i * spacing, -half_extent + j * spacing);
+  const Eigen::Array2i cells = (size / resolution).array().ceil().cast<int>();
+  const Eigen::Array2d spacing = size.array() / cells.cast<double>();
+  const auto position = [&](int i, int j) {
+    return Eigen::Vector2d(area.min().array() + Eigen::Array2d(i, j) * spacing);
+  };
+  Eigen::MatrixXd height(cells.x() + 1, cells.y() + 1);
+  for (int i = 0; i <= cells.x(); ++i) {
+    for (int j = 0; j <= cells.y(); ++j) {
+      const Eigen::Vector2d xy = position(i, j);
+      height(i, j) = surface.height(xy.x(), xy.y());
     }
   }
   const double low = height.minCoeff();
@@ -146,8 +154,8 @@ visualization_msgs::Marker surfaceMesh(const terrain::Surface& surface, double h
   msg.scale.x = msg.scale.y = msg.scale.z = 1.0;
   msg.color.r = msg.color.g = msg.color.b = msg.color.a = 1.0;
   auto vertex = [&](int i, int j) {
-    msg.points.push_back(toPoint(
-        {-half_extent + i * spacing, -half_extent + j * spacing, height(i, j)}));
+    const Eigen::Vector2d xy = position(i, j);
+    msg.points.push_back(toPoint({xy.x(), xy.y(), height(i, j)}));
     const double level = (height(i, j) - low) / span;  // 0 in the valleys, 1 on the ridges
     std_msgs::ColorRGBA colour;
     colour.r = static_cast<float>(0.25 + 0.5 * level);
@@ -159,8 +167,8 @@ visualization_msgs::Marker surfaceMesh(const terrain::Surface& surface, double h
   // Two counter-clockwise (seen from above) triangles per cell.
   constexpr std::array<std::pair<int, int>, 6> kCellTriangles{
       {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}}};
-  for (int i = 0; i < cells; ++i) {
-    for (int j = 0; j < cells; ++j) {
+  for (int i = 0; i < cells.x(); ++i) {
+    for (int j = 0; j < cells.y(); ++j) {
       for (const auto& [di, dj] : kCellTriangles) vertex(i + di, j + dj);
     }
   }

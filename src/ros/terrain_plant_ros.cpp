@@ -52,7 +52,9 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
   const double radius = radiusFromRobotDescription(nh);
   const terrain::ContactModel model = parameters_.contact_model;
-  surface_ = config::makeSurface(terrain_config.surface);
+  config::SurfaceLoading loading;
+  loading.warn = [](const std::string& warning) { ROS_WARN_STREAM(warning); };
+  surface_ = config::makeSurface(terrain_config.surface, loading);
   kinematics_ = std::make_unique<terrain::TerrainKinematics>(
       *surface_, parameters_.robot_type, radius, model, terrain_config.tilt_limit);
   state_.x = parameters_.initial_x;
@@ -63,9 +65,11 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   odom_pub_ = loop_.advertise<nav_msgs::Odometry>("odom");
   state_pub_ = loop_.advertise<spherical_robots::TerrainState>("terrain_state");
   marker_pub_ = nh.advertise<visualization_msgs::Marker>("terrain_marker", 1, true);
-  marker_pub_.publish(conversions::surfaceMesh(*surface_, parameters_.marker_half_extent,
-                                               parameters_.marker_resolution,
-                                               kWorldFrame, ros::Time::now()));
+  // A height map is drawn where it has heights; a surface defined everywhere, on a square.
+  const Eigen::Vector2d corner = Eigen::Vector2d::Constant(parameters_.marker_half_extent);
+  marker_pub_.publish(conversions::surfaceMesh(
+      *surface_, surface_->domain().value_or(Eigen::AlignedBox2d(-corner, corner)),
+      parameters_.marker_resolution, kWorldFrame, ros::Time::now()));
   ROS_INFO_STREAM(terrain::toString(parameters_.robot_type) << " sphere, R = " << radius << " m, "
                                            << terrain::toString(model) << " contact model, on "
                                            << surface_->describe() << "; frames " << base_frame_
@@ -117,6 +121,7 @@ void TerrainPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat
   status.summary(diagnostic_msgs::DiagnosticStatus::OK, "rolling");
   status.add("robot type", terrain::toString(parameters_.robot_type));
   status.add("contact model", terrain::toString(kinematics_->model()));
+  status.add("surface", surface_->describe());
   status.add("x [m]", state_.x);
   status.add("y [m]", state_.y);
   status.add("psi [rad]", state_.psi);

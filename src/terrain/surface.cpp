@@ -85,6 +85,8 @@ void requireSinglePointContact(const Surface& surface, double radius) {
     message << "radius " << radius << " m on surface '" << surface.describe()
             << "' breaks single-point contact: R * max principal curvature = " << radius << " * "
             << curvature << " 1/m = " << radius * curvature << " >= 1 (paper assumption 3)";
+    const std::string location = surface.maxCurvatureLocation();
+    if (!location.empty()) message << "; the curvature is largest in " << location;
     throw std::invalid_argument(message.str());
   }
 }

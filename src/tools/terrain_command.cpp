@@ -1,6 +1,8 @@
 #include "terrain_command.hpp"
 
 #include <cmath>
+#include <filesystem>
+#include <iostream>
 #include <sstream>
 
 #include "spherical_robots/config/actuator_models.hpp"
@@ -36,6 +38,7 @@ TerrainRunSettings settingsFrom(const ParsedOptions& options) {
                                                         : TerrainRunSettings{}.dt;
   settings.log_rate = options.number("log-rate");
   settings.config_dir = configDirectory(options);
+  if (options.given("terrain")) settings.terrain = options.text("terrain");
   settings.stack = options.text("stack");
   if (settings.stack != "terrain" && settings.loop != TerrainLoop::Sampled)
     throw UsageError("--stack " + settings.stack + " needs --loop sampled (it names a launched "
@@ -64,8 +67,8 @@ int runTerrainCommand(const ParsedOptions& options, std::ostream& out) {
 const char* const kDescription =
     R"(The run starts at the origin with psi = phi = 0 and integrates the closed loop (the tracking
 law evaluated at every RK4 stage) with a fixed step. The scenario (surface, paths, the gains of
-both laws, RS tilt limit) is DIR/config/terrain.yaml; the sphere's radius is the base_link
-sphere of DIR/urdf/terrain_robot.urdf.
+both laws, RS tilt limit) is DIR/config/terrain.yaml, its surface replaced by --terrain's height
+map if given; the sphere's radius is the base_link sphere of DIR/urdf/terrain_robot.urdf.
 
 --loop sampled runs the loop as the launched stack (launch/terrain_stack.launch, clock:=lockstep,
 hardware:=sim with the actuator models of --actuator-models, ideal without) samples it, with the core code each node calls and in the order of one
@@ -101,7 +104,8 @@ none) and the mean and max |e_t| over the logged rows with t >= 40 s.
 Exit status: 0 success; 2 usage error (unknown option, unknown robot/path/model/law, malformed
 number, missing option); 4 invalid input (non-finite or out-of-range number, duration or log
 period not a whole number of steps, unreadable config, a radius that breaks single-point
-contact, a run that diverges): one-line error on stderr and no output file.
+contact, a run that diverges or leaves the height map): one-line error on stderr and no output
+file. An 8-bit height map is smoothed, with a warning on stderr.
 )";
 
 }  // namespace
@@ -144,7 +148,15 @@ TerrainRun::TerrainRun(const TerrainRunSettings& settings) : settings_(settings)
   const config::LayeredParameterSource parameters(std::move(layers));
   const config::TerrainConfig scenario = config::loadTerrainConfig(parameters);
   const double radius = radiusFromUrdf(settings.config_dir + "/urdf/terrain_robot.urdf");
-  surface_ = config::makeSurface(scenario.surface);
+  config::SurfaceSpec surface = scenario.surface;
+  if (!settings.terrain.empty()) {
+    surface.type = "height_map";
+    surface.height_map = std::filesystem::absolute(settings.terrain).string();
+  }
+  config::SurfaceLoading loading;
+  loading.base_directory = settings.config_dir;
+  loading.warn = [](const std::string& warning) { std::cerr << "warning: " << warning << '\n'; };
+  surface_ = config::makeSurface(surface, loading);
   path_ = config::makePath(settings.path, scenario);
   kinematics_ = std::make_unique<terrain::TerrainKinematics>(*surface_, settings.robot, radius,
                                                              settings.model, scenario.tilt_limit);
@@ -234,7 +246,7 @@ Subcommand terrainCommand() {
   Subcommand command;
   command.name = "terrain";
   command.summary =
-      "Closed-loop run of a 3R, 2R, RT or RS robot tracking a path over the terrain of eq 59.";
+      "Closed-loop run of a 3R, 2R, RT or RS robot tracking a path over eq 59 or a height map.";
   command.description = kDescription;
   command.options = {
       {"robot",
@@ -300,6 +312,11 @@ Subcommand terrainCommand() {
           "With --loop sampled: the hardware interface's actuator models, the YAML file a stack\n"
           "takes as actuator_models:= (e.g. config/actuators_realistic.yaml: lag, dead time,\n"
           "encoder resolution, seeded velocity noise). Default: ideal actuators."),
+      optionalOption(
+          "terrain", "FILE",
+          "A height map's YAML (docs/conventions.md, \"Height maps\"; e.g. maps/hills.yaml)\n"
+          "instead of config/terrain.yaml's surface; a relative path is relative to the current\n"
+          "directory. The run must stay on the map (else exit 4)."),
       configOption(),
       outOption("CSV file to write (columns below)."),
   };

@@ -36,6 +36,7 @@ struct TerrainRunSettings {
   double dt = 0.005;        ///< RK4 step [s] > 0 (continuous); the plant's step (sampled)
   double log_rate = 10.0;   ///< CSV rows per second [Hz]; 1/log_rate a whole number of steps
   std::string config_dir;   ///< holds config/terrain.yaml and urdf/terrain_robot.urdf
+  std::string terrain;      ///< a height map's YAML in place of terrain.yaml's surface; empty: none
   std::string actuator_models;  ///< sampled: a YAML file of actuator models; empty: ideal
 };
 

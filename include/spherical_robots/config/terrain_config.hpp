@@ -2,6 +2,7 @@
 // The terrain scenario's parameters (config/terrain.yaml): surface, paths, the gains of both
 // tracking laws, RS tilt limit.
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -17,12 +18,23 @@
 namespace spherical_robots::config {
 
 struct SurfaceSpec {
-  std::string type = "cosine";  ///< "cosine" (eq 59) | "plane" | "tilted_plane"
+  std::string type = "cosine";  ///< "cosine" (eq 59) | "plane" | "tilted_plane" | "height_map"
   double amplitude = 0.2;       ///< cosine a [m]
   double frequency = 2.0;       ///< cosine w [rad/m]
   double slope_x = 0.0;         ///< plane g_x [-]
   double slope_y = 0.0;         ///< plane g_y [-]
   double offset = 0.0;          ///< plane z0 [m]
+  /// height_map: the map's YAML (config::loadHeightMap); relative to the package's share
+  /// directory unless absolute.
+  std::string height_map;
+};
+
+/// How makeSurface finds a height map and tells what it had to do to it.
+struct SurfaceLoading {
+  /// A relative SurfaceSpec::height_map is relative to this; empty: packageShareDirectory().
+  std::string base_directory;
+  /// Receives each warning about the map's data (an 8-bit image and its smoothing); may be empty.
+  std::function<void(const std::string&)> warn;
 };
 
 struct TerrainConfig {
@@ -47,8 +59,10 @@ std::unique_ptr<terrain::PursuitController> makePursuitController(terrain::Pursu
                                                                   const TerrainConfig& config,
                                                                   double radius);
 
-/// @throw std::invalid_argument on an unknown type or bad numbers.
-std::unique_ptr<terrain::Surface> makeSurface(const SurfaceSpec& spec);
+/// @throw std::invalid_argument on an unknown type or bad numbers, or naming the height map's
+/// file and what is wrong with it.
+std::unique_ptr<terrain::Surface> makeSurface(const SurfaceSpec& spec,
+                                              const SurfaceLoading& loading = {});
 
 /// name: "circle" | "diamond". @throw std::invalid_argument on an unknown name.
 std::unique_ptr<terrain::ReferencePath> makePath(const std::string& name, const TerrainConfig& config);

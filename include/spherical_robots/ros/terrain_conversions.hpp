@@ -58,12 +58,12 @@ spherical_robots::TrackingError toTrackingErrorMsg(const terrain::TrackingError&
 nav_msgs::Path sampledPath(const terrain::ReferencePath& path, const terrain::Surface& surface,
                            int samples, const std::string& frame, const ros::Time& stamp);
 
-/// The surface over the square [-half_extent, half_extent]^2 [m] as a TRIANGLE_LIST mesh with a
-/// grid spacing of `resolution` [m], coloured by height.
-/// @throw std::invalid_argument on a non-positive or non-finite extent or resolution, or more than
-/// 1000 x 1000 cells.
-visualization_msgs::Marker surfaceMesh(const terrain::Surface& surface, double half_extent,
-                                       double resolution, const std::string& frame,
-                                       const ros::Time& stamp);
+/// The surface over the rectangle `area` [m] as a TRIANGLE_LIST mesh with a grid spacing of at
+/// most `resolution` [m] (the rectangle's sides divided evenly), coloured by height.
+/// @throw std::invalid_argument on an empty or non-finite rectangle, a non-positive or non-finite
+/// resolution, or more than 1000 cells a side.
+visualization_msgs::Marker surfaceMesh(const terrain::Surface& surface,
+                                       const Eigen::AlignedBox2d& area, double resolution,
+                                       const std::string& frame, const ros::Time& stamp);
 
 }  // namespace spherical_robots::conversions

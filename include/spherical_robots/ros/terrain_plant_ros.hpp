@@ -23,7 +23,7 @@ struct TerrainPlantParameters {
   double initial_x = 0.0;             ///< [m]
   double initial_y = 0.0;             ///< [m]
   double initial_psi = 0.0;           ///< [rad]
-  double marker_half_extent = 3.0;    ///< [m] the terrain mesh spans [-e, e]^2
+  double marker_half_extent = 3.0;    ///< [m] the mesh spans [-e, e]^2, a height map its extent
   double marker_resolution = 0.1;     ///< [m]
 };
 

@@ -2,7 +2,9 @@
 // Terrain surfaces z = f(x, y) (paper eq 3) with the derivatives the rolling kinematics need.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace spherical_robots::terrain {
@@ -29,6 +31,10 @@ class Surface {
   virtual double maxPrincipalCurvature() const = 0;
   /// A short human-readable description, e.g. "cosine a=0.2 m w=2 rad/m".
   virtual std::string describe() const = 0;
+  /// The rectangle [m] the surface is defined on; nullopt where it is defined everywhere.
+  virtual std::optional<Eigen::AlignedBox2d> domain() const { return std::nullopt; }
+  /// Where maxPrincipalCurvature() is reached, for messages; empty if nowhere in particular.
+  virtual std::string maxCurvatureLocation() const { return {}; }
 };
 
 /// Paper eq 59: z = a (cos(w x) + cos(w y) - 2).
