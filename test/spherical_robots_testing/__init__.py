@@ -1,8 +1,8 @@
 """What the package's test programs share (test/*_check.py): a topic recorder that notes each
-message's simulated arrival time, and waits on conditions and on simulated time, each bounded by a
-wall-clock deadline so that a stack that never gets there fails the test instead of hanging it;
-and, for the programs that launch stacks on masters of their own, a free port and a launch file's
-path.
+message's simulated arrival time, and waits on conditions, on simulated time and on an action
+goal's end, each bounded by a wall-clock deadline so that a stack that never gets there fails the
+test instead of hanging it; and, for the programs that launch stacks on masters of their own, a
+free port and a launch file's path.
 
 Not installed: it sits beside the test programs, which run from the package's source tree (the
 directory of the running program is on Python's path).
@@ -16,8 +16,8 @@ import time
 import rospkg
 import rospy
 
-__all__ = ['Recorder', 'wait_until', 'sim_sleep', 'publish_until', 'first_at_rest',
-           'quaternion_angle', 'free_port', 'launch_file']
+__all__ = ['Recorder', 'wait_until', 'sim_sleep', 'wait_for_result', 'publish_until',
+           'first_at_rest', 'quaternion_angle', 'free_port', 'launch_file']
 
 PKG = 'spherical_robots'
 
@@ -67,6 +67,15 @@ def sim_sleep(seconds, timeout):
     end = rospy.Time.now().to_sec() + seconds
     wait_until(lambda: rospy.Time.now().to_sec() >= end, '%.1f s of simulated time' % seconds,
                timeout)
+
+
+def wait_for_result(client, what, timeout):
+    """Waits until the goal of an actionlib SimpleActionClient has ended (its result received),
+    at most `timeout` [s] of wall time (the client's own wait counts simulated time); its
+    (actionlib_msgs/GoalStatus state, result)."""
+    from actionlib import SimpleGoalState  # only the action tests need actionlib
+    wait_until(lambda: client.simple_state == SimpleGoalState.DONE, what, timeout)
+    return client.get_state(), client.get_result()
 
 
 def publish_until(publisher, messages, condition, what, timeout):
