@@ -36,7 +36,7 @@ import rospy
 import rostest
 import tf2_ros
 from actionlib_msgs.msg import GoalStatus
-from diagnostic_msgs.msg import DiagnosticArray
+from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
 from nav_msgs.msg import Odometry, Path
 from sensor_msgs.msg import JointState
 
@@ -132,15 +132,16 @@ class RotorStackCheck(unittest.TestCase):
         cls.tf_buffer = tf2_ros.Buffer()
         cls.tf_listener = tf2_ros.TransformListener(cls.tf_buffer)
 
+    def latest_status(self, suffix):
+        """The latest /diagnostics status whose name ends with suffix, or None."""
+        statuses = [s for a in self.diagnostics.since(0) for s in a.status if s.name.endswith(suffix)]
+        return statuses[-1] if statuses else None
+
     def start_up_manoeuvre_done(self):
         """The planner says on /diagnostics that it is idle after one execution."""
-        for array in self.diagnostics.since(0):
-            for status in array.status:
-                if status.name.endswith('rotor planner'):
-                    values = {v.key: v.value for v in status.values}
-                    if values.get('state') == 'idle' and int(values.get('executions', 0)) >= 1:
-                        return True
-        return False
+        status = self.latest_status('rotor planner')
+        values = {v.key: v.value for v in status.values} if status else {}
+        return values.get('state') == 'idle' and int(values.get('executions', 0)) >= 1
 
     def test_01_plan_execute_reach_target(self):
         u, v, psi = self.target
@@ -187,6 +188,14 @@ class RotorStackCheck(unittest.TestCase):
         self.assertLessEqual(angle, self.attitude_bound)
         if result is not None:  # the planner measured the same rest from odom
             self.assertAlmostEqual(result.distance, error, delta=1e-9)
+        # Idle after a manoeuvre that ended normally is OK: the planner, and the hardware whose
+        # watchdog then finds the rotors commanded to rest.
+        wait_until(lambda: 'idle' in getattr(self.latest_status(': actuators'), 'message', ''),
+                   'the hardware interface idle on /diagnostics')
+        for suffix in (': actuators', 'rotor planner'):
+            status = self.latest_status(suffix)
+            self.assertEqual(status.level, DiagnosticStatus.OK, '%s: %s' % (status.name,
+                                                                           status.message))
         self.assertAlmostEqual(pose.position.z, RADIUS, delta=1e-9)
         if rospy.get_param('~batch', False):
             # From a start-up manoeuvre the batch run's clock is the stack's from its first step
