@@ -11,12 +11,9 @@ import time
 import actionlib
 import rospy
 
-from spherical_robots.msg import MoveFreebotAction, MoveFreebotGoal, MoveFreebotResult
+from spherical_robots.msg import MoveFreebotAction, MoveFreebotGoal
 
 WORLD_FRAME = 'world'
-VERDICTS = {MoveFreebotResult.ARRIVED: 'arrived', MoveFreebotResult.UNREACHABLE: 'unreachable',
-            MoveFreebotResult.REJECTED: 'rejected', MoveFreebotResult.PREEMPTED: 'preempted',
-            MoveFreebotResult.ABORTED: 'aborted'}
 
 
 def goal_of(target):
@@ -50,8 +47,7 @@ def main():
             if rospy.is_shutdown():
                 return
             result = client.get_result()
-            rospy.loginfo('target %d: %s (%s)', index + 1,
-                          VERDICTS.get(result.status, result.status) if result else 'no result',
+            rospy.loginfo('target %d: %s', index + 1,
                           result.message if result else client.get_goal_status_text())
             rospy.sleep(dwell)
         if not loop:
