@@ -19,8 +19,8 @@ from spherical_robots.msg import (ExecuteRotorManoeuvreAction, ExecuteRotorManoe
 def main():
     rospy.init_node('rotor_execute')
     u, v, psi = (float(x) for x in str(rospy.get_param('~target', '0.05,0.03,0.4')).split(','))
-    goal = ExecuteRotorManoeuvreGoal(k=rospy.get_param('~k', 2.5), steps=rospy.get_param('~steps', 2),
-                                     u_a=u, v_a=v, psi=psi,
+    goal = ExecuteRotorManoeuvreGoal(k=rospy.get_param('~k', 2.5),
+                                     steps=rospy.get_param('~steps', 2), u_a=u, v_a=v, psi=psi,
                                      max_radius=rospy.get_param('~max_radius', 0.0),
                                      heading_turns=0, plan_index=rospy.get_param('~index', 0))
     client = actionlib.SimpleActionClient('rotor_planner/execute_manoeuvre',

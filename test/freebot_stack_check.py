@@ -19,7 +19,6 @@ import functools
 import math
 import unittest
 
-import actionlib
 import rosnode
 import rospy
 import rostest
@@ -47,7 +46,6 @@ WORLD_FRAME = 'world'
 # Every wait of this script is bounded by WALL_DEADLINE.
 wait_until = functools.partial(testing.wait_until, timeout=WALL_DEADLINE)
 sim_sleep = functools.partial(testing.sim_sleep, timeout=WALL_DEADLINE)
-wait_for_result = functools.partial(testing.wait_for_result, timeout=WALL_DEADLINE)
 
 
 def pose_of(values):
@@ -67,23 +65,15 @@ def goal_of(values):
     return goal
 
 
-class Client:
-    """An actionlib client of move_freebot that keeps its goal's feedback."""
+class MoveClient(testing.GoalClient):
+    """A client of move_freebot."""
 
     def __init__(self):
-        self.client = actionlib.SimpleActionClient('move_freebot', MoveFreebotAction)
-        self.feedback = []
-        # Connected both ways, or a goal sent now could be lost (simulated time flows meanwhile).
-        wait_until(lambda: self.client.wait_for_server(rospy.Duration(0.1)),
-                   'the move_freebot action server')
+        super().__init__('move_freebot', MoveFreebotAction, WALL_DEADLINE)
 
-    def send(self, values):
-        self.feedback = []
-        self.client.send_goal(goal_of(values), feedback_cb=self.feedback.append)
-
-    def result(self, what):
-        """(state, result) once the goal has ended."""
-        return wait_for_result(self.client, what)
+    def move(self, values):
+        """A goal [x, y, z] or [x, y, z, qw, qx, qy, qz] in the world."""
+        self.send(goal_of(values))
 
 
 class FreebotStackCheck(unittest.TestCase):
@@ -103,7 +93,7 @@ class FreebotStackCheck(unittest.TestCase):
         cls.tf_listener = tf2_ros.TransformListener(cls.tf_buffer)
         cls.commands = Recorder('actuators/command', JointState)
         wait_until(lambda: cls.states.count() > 0, 'the first freebot_state message')
-        cls.goals = Client()
+        cls.goals = MoveClient()
 
     def end_effector(self):
         """B_n's centre and orientation (w, x, y, z) in world, from tf."""
@@ -114,7 +104,7 @@ class FreebotStackCheck(unittest.TestCase):
 
     def send(self, values, what='the verdict'):
         """Sends a goal and returns its final (state, result)."""
-        self.goals.send(values)
+        self.goals.move(values)
         return self.goals.result(what)
 
     def wait_moving(self):
@@ -231,11 +221,11 @@ class FreebotStackCheck(unittest.TestCase):
     def test_05_a_second_goal_preempts_the_first(self):
         """A second goal while the first moves: the first is preempted (its errors as measured),
         the second arrives."""
-        second = Client()
-        self.goals.send(self.reachable)
+        second = MoveClient()
+        self.goals.move(self.reachable)
         self.wait_moving()
         target = [float(v) for v in rospy.get_param('~position_only')]
-        second.send(target)
+        second.move(target)
         state, verdict = self.goals.result('the first goal preempted')
         self.assertEqual(state, GoalStatus.PREEMPTED, verdict.message)
         self.assertEqual(verdict.status, MoveFreebotResult.PREEMPTED, verdict.message)
@@ -251,9 +241,9 @@ class FreebotStackCheck(unittest.TestCase):
     def test_06_cancel_stops_the_chain(self):
         """A cancel while the chain moves: preempted; from the step that took it every wheel
         command is zero, and once the wheels have stopped the chain stays put."""
-        self.goals.send(self.reachable)
+        self.goals.move(self.reachable)
         self.wait_moving()
-        self.goals.client.cancel_goal()
+        self.goals.cancel()
         state, verdict = self.goals.result('the canceled goal to end')
         self.assertEqual(state, GoalStatus.PREEMPTED, verdict.message)
         self.assertEqual(verdict.status, MoveFreebotResult.PREEMPTED, verdict.message)
@@ -275,10 +265,10 @@ class FreebotStackCheck(unittest.TestCase):
     def test_07_a_malformed_goal_is_rejected_and_the_goal_in_force_goes_on(self):
         """A goal with a NaN coordinate while another moves: rejected at once, naming the field;
         the goal in force arrives."""
-        bad = Client()
-        self.goals.send(self.reachable)
+        bad = MoveClient()
+        self.goals.move(self.reachable)
         self.wait_moving()
-        bad.send([float('nan')] + list(self.reachable[1:]))
+        bad.move([float('nan')] + list(self.reachable[1:]))
         state, verdict = bad.result('the malformed goal rejected')
         self.assertEqual(state, GoalStatus.REJECTED, verdict.message)
         self.assertEqual(verdict.status, MoveFreebotResult.REJECTED, verdict.message)
@@ -314,7 +304,7 @@ class FreebotStackCheck(unittest.TestCase):
         acceleration = float(rospy.get_param(hardware + '/max_acceleration'))
         period = 1.0 / float(rospy.get_param(hardware + '/rate'))
         commands = Recorder('actuators/command', JointState)
-        self.goals.send(self.reachable)
+        self.goals.move(self.reachable)
         wait_until(lambda: self.goals.feedback, 'freebot_ik to start moving (feedback)')
         self.wait_moving()
         speed = max(abs(v) for v in self.actuators.since(-1)[0].velocity)

@@ -24,7 +24,6 @@ import threading
 import time
 import unittest
 
-import actionlib
 import rosgraph
 import rosnode
 import rospy
@@ -39,7 +38,7 @@ from spherical_robots.msg import (ExecuteRotorManoeuvreAction, ExecuteRotorManoe
                                   FreebotState, MoveFreebotAction, MoveFreebotActionGoal,
                                   MoveFreebotGoal, MoveFreebotResult, NormaState, TerrainState,
                                   TrackingError)
-from spherical_robots_testing import wait_until
+from spherical_robots_testing import GoalClient, wait_until
 
 NAN = float('nan')
 INF = float('inf')
@@ -272,11 +271,8 @@ class HostileInput(unittest.TestCase):
         drive it."""
         u, v, psi = (float(x) for x in str(rospy.get_param('~target')).split(','))
         cls.target = (u, v)
-        cls.client = actionlib.SimpleActionClient('rotor_planner/execute_manoeuvre',
-                                                  ExecuteRotorManoeuvreAction)
-        wait_until(lambda: cls.client.wait_for_server(rospy.Duration(0.1)),
-                   'rotor_planner/execute_manoeuvre', 60.0)
-        cls.client.send_goal(ExecuteRotorManoeuvreGoal(k=2.5, steps=2, u_a=u, v_a=v, psi=psi))
+        cls.goal = GoalClient('rotor_planner/execute_manoeuvre', ExecuteRotorManoeuvreAction, 60.0)
+        cls.goal.send(ExecuteRotorManoeuvreGoal(k=2.5, steps=2, u_a=u, v_a=v, psi=psi))
 
     @classmethod
     def send_goal(cls):
@@ -286,17 +282,11 @@ class HostileInput(unittest.TestCase):
         position, q = goal.target.pose.position, goal.target.pose.orientation
         position.x, position.y, position.z = 0.0924, 0.1597, 0.1154
         q.w, q.x, q.y, q.z = 0.9682, 0.0874, 0.2220, 0.0756
-        cls.client = actionlib.SimpleActionClient('move_freebot', MoveFreebotAction)
-        wait_until(lambda: cls.client.wait_for_server(rospy.Duration(0.1)), 'move_freebot', 30.0)
+        cls.goal = GoalClient('move_freebot', MoveFreebotAction, 120.0)
         wait_until(lambda: 'freebot_state' in cls.last_state, 'a chain state', 30.0)
         goal.target.header.stamp = rospy.Time.now()
-        feedback = []
-        cls.client.send_goal(goal, feedback_cb=feedback.append)
-        wait_until(lambda: feedback, 'the goal to be taken (feedback)', 30.0)
-
-    def goal_ended(self):
-        """Whether the goal this check sent (the manoeuvre, the FreeBOT goal) has ended."""
-        return self.client.simple_state == actionlib.SimpleGoalState.DONE
+        cls.goal.send(goal)
+        wait_until(lambda: cls.goal.feedback, 'the goal to be taken (feedback)', 30.0)
 
     @classmethod
     def watch_new_topics(cls, _event=None):
@@ -455,7 +445,7 @@ class HostileInput(unittest.TestCase):
         # test sends the good (zero) commands itself, one in five, and for 3 s after the burst.
         own_good = self.stack == 'rotor'
         if own_good:
-            wait_until(self.goal_ended, 'the manoeuvre to end', 120.0)
+            wait_until(self.goal.done, 'the manoeuvre to end', 120.0)
         good = JointState(name=list(names))
         setattr(good, field, [0.0] * len(names))
         start = time.time()
@@ -497,15 +487,14 @@ class HostileInput(unittest.TestCase):
         """What the bursts must not have spoiled: the rotor manoeuvre ends at its target, the
         FreeBOT goal is ARRIVED (never ABORTED, never timed out by a stamp from the future)."""
         if self.stack == 'rotor':
-            wait_until(self.goal_ended, 'the manoeuvre to end', 120.0)
+            wait_until(self.goal.done, 'the manoeuvre to end', 120.0)
             time.sleep(0.5)
             x, y = _rest_position(self.last_state['odom'])
             miss = math.hypot(x - self.target[0], y - self.target[1])
             self.assertLess(miss, self.error_bound, 'the manoeuvre ended %.2e m off its target'
                             % miss)
         elif self.stack == 'freebot':
-            wait_until(self.goal_ended, 'a final verdict', 120.0)
-            verdict = self.client.get_result()
+            _, verdict = self.goal.result('a final verdict')
             self.assertEqual(verdict.status, MoveFreebotResult.ARRIVED, verdict.message)
 
 

@@ -11,7 +11,6 @@ import threading
 import time
 import unittest
 
-import actionlib
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
@@ -22,7 +21,7 @@ from spherical_robots.msg import (ExecuteRotorManoeuvreAction, ExecuteRotorManoe
                                   ExecuteRotorManoeuvreResult)
 from spherical_robots.srv import PlanRotorMotion, PlanRotorMotionRequest
 
-from spherical_robots_testing import Recorder, wait_for_result, wait_until
+from spherical_robots_testing import GoalClient, Recorder, wait_until
 
 PKG = 'spherical_robots'
 NAME = 'rotor_planner_check'
@@ -136,12 +135,10 @@ class RotorPlannerCheck(unittest.TestCase):
         status = self.wait_for_status(lambda s: s.level == DiagnosticStatus.WARN
                                       and 'steps' in s.message, 'the refused request')
         self.assertIn('steps', dict((v.key, v.value) for v in status.values)['last problem'])
-        client = actionlib.SimpleActionClient(self.node + '/execute_manoeuvre',
-                                              ExecuteRotorManoeuvreAction)
-        self.assertTrue(client.wait_for_server(rospy.Duration(30.0)))
-        client.send_goal(ExecuteRotorManoeuvreGoal(k=2.5, steps=1, u_a=0.0, v_a=self.radius,
-                                                   plan_index=99))
-        state, result = wait_for_result(client, 'the goal rejected', 20.0)
+        client = GoalClient(self.node + '/execute_manoeuvre', ExecuteRotorManoeuvreAction, 30.0)
+        client.send(ExecuteRotorManoeuvreGoal(k=2.5, steps=1, u_a=0.0, v_a=self.radius,
+                                              plan_index=99))
+        state, result = client.result('the goal rejected')
         self.assertEqual(state, GoalStatus.REJECTED, result.message)
         self.assertEqual(result.status, ExecuteRotorManoeuvreResult.REJECTED)
         self.assertIn('plan_index 99 refused', result.message)

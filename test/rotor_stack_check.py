@@ -31,7 +31,6 @@ import subprocess
 import time
 import unittest
 
-import actionlib
 import rospy
 import rostest
 import tf2_ros
@@ -54,31 +53,23 @@ RADIUS = 0.1           # [m], launch/rotor_stack.launch
 # Every wait of this script is bounded by WALL_DEADLINE.
 wait_until = functools.partial(testing.wait_until, timeout=WALL_DEADLINE)
 sim_sleep = functools.partial(testing.sim_sleep, timeout=WALL_DEADLINE)
-wait_for_result = functools.partial(testing.wait_for_result, timeout=WALL_DEADLINE)
 # A one-step manoeuvre with a published plan (Svinin et al., section IV: h = R along +v_a), for
 # the preempt and cancel cases: 2 pi + 1 s of motion at 1 rad/s.
 SHORT = dict(k=2.5, steps=1, u_a=0.0, v_a=RADIUS, psi=0.0)
 
 
-class Client:
-    """An actionlib client of rotor_planner/execute_manoeuvre that keeps its goal's feedback."""
+class ManoeuvreClient(testing.GoalClient):
+    """A client of rotor_planner/execute_manoeuvre."""
 
     def __init__(self):
-        self.client = actionlib.SimpleActionClient('rotor_planner/execute_manoeuvre',
-                                                   ExecuteRotorManoeuvreAction)
-        self.feedback = []
-        wait_until(lambda: self.client.wait_for_server(rospy.Duration(0.1)),
-                   'the execute_manoeuvre action server')
+        super().__init__('rotor_planner/execute_manoeuvre', ExecuteRotorManoeuvreAction,
+                         WALL_DEADLINE)
 
-    def send(self, **fields):
-        self.feedback = []
-        self.client.send_goal(ExecuteRotorManoeuvreGoal(**fields), feedback_cb=self.feedback.append)
-
-    def result(self, what):
-        """(state, result) once the goal has ended."""
-        return wait_for_result(self.client, what)
+    def execute(self, **fields):
+        self.send(ExecuteRotorManoeuvreGoal(**fields))
 
     def wait_progress(self, fraction):
+        """Until the feedback says that much of the manoeuvre is traced."""
         wait_until(lambda: self.feedback and self.feedback[-1].progress >= fraction,
                    '%.0f %% of the manoeuvre' % (100 * fraction))
 
@@ -153,9 +144,9 @@ class RotorStackCheck(unittest.TestCase):
             self.assertTrue(plan.success, plan.reason)
             self.assertLessEqual(plan.final_error[0], 1e-6)
             wait_until(lambda: self.odom.last() is not None, 'odom')
-            client = Client()
+            client = ManoeuvreClient()
             wall_start, sim_start = time.time(), rospy.Time.now().to_sec()
-            client.send(k=self.k, steps=self.steps, u_a=u, v_a=v, psi=psi, plan_index=0)
+            client.execute(k=self.k, steps=self.steps, u_a=u, v_a=v, psi=psi, plan_index=0)
             state, result = client.result('the manoeuvre executed')
             self.assertEqual(state, GoalStatus.SUCCEEDED, result.message)
             self.assertEqual(result.status, ExecuteRotorManoeuvreResult.EXECUTED, result.message)
@@ -246,21 +237,21 @@ class RotorStackCheck(unittest.TestCase):
         then it is canceled."""
         if not rospy.get_param('~actions', False):
             return
-        client, bad = Client(), Client()
-        client.send(plan_index=0, **SHORT)
+        client, bad = ManoeuvreClient(), ManoeuvreClient()
+        client.execute(plan_index=0, **SHORT)
         client.wait_progress(0.1)
         for fields, reason in ((dict(SHORT, steps=0), 'steps'),
                                (dict(SHORT, u_a=100.0 * RADIUS), 'no plan'),
                                (dict(SHORT, plan_index=99), 'plan_index 99')):
-            bad.send(**fields)
+            bad.execute(**fields)
             state, result = bad.result('the rejection of %s' % fields)
             self.assertEqual(state, GoalStatus.REJECTED, result.message)
             self.assertEqual(result.status, ExecuteRotorManoeuvreResult.REJECTED, result.message)
             self.assertIn(reason, result.message)
         count = len(client.feedback)
         wait_until(lambda: len(client.feedback) > count + 10, 'feedback after the rejections')
-        self.assertEqual(client.client.get_state(), GoalStatus.ACTIVE)
-        client.client.cancel_goal()
+        self.assertEqual(client.state(), GoalStatus.ACTIVE)
+        client.cancel()
         self.assertEqual(client.result('the cancel')[0], GoalStatus.PREEMPTED)
 
     def test_04_a_second_goal_preempts_the_first(self):
@@ -268,11 +259,11 @@ class RotorStackCheck(unittest.TestCase):
         the rotors commanded to rest, the second executed."""
         if not rospy.get_param('~actions', False):
             return
-        first, second = Client(), Client()
-        first.send(plan_index=0, **SHORT)
+        first, second = ManoeuvreClient(), ManoeuvreClient()
+        first.execute(plan_index=0, **SHORT)
         first.wait_progress(0.3)
         sent = rospy.Time.now().to_sec()  # the step that takes the second goal comes later
-        second.send(plan_index=0, **SHORT)
+        second.execute(plan_index=0, **SHORT)
         state, result = first.result('the first goal preempted')
         self.assertEqual(state, GoalStatus.PREEMPTED, result.message)
         self.assertEqual(result.status, ExecuteRotorManoeuvreResult.PREEMPTED, result.message)
@@ -293,11 +284,11 @@ class RotorStackCheck(unittest.TestCase):
         rest and the sphere staying where it stopped."""
         if not rospy.get_param('~actions', False):
             return
-        client = Client()
-        client.send(plan_index=0, **SHORT)
+        client = ManoeuvreClient()
+        client.execute(plan_index=0, **SHORT)
         client.wait_progress(0.3)
         self.assertGreater(max(abs(v) for v in self.commands.last().velocity), 0.5)
-        client.client.cancel_goal()
+        client.cancel()
         state, result = client.result('the cancel')
         self.assertEqual(state, GoalStatus.PREEMPTED, result.message)
         self.assertEqual(result.status, ExecuteRotorManoeuvreResult.PREEMPTED, result.message)

@@ -16,8 +16,8 @@ import time
 import rospkg
 import rospy
 
-__all__ = ['Recorder', 'wait_until', 'sim_sleep', 'wait_for_result', 'publish_until',
-           'first_at_rest', 'quaternion_angle', 'free_port', 'launch_file']
+__all__ = ['Recorder', 'wait_until', 'sim_sleep', 'GoalClient', 'publish_until', 'first_at_rest',
+           'quaternion_angle', 'free_port', 'launch_file']
 
 PKG = 'spherical_robots'
 
@@ -69,13 +69,38 @@ def sim_sleep(seconds, timeout):
                timeout)
 
 
-def wait_for_result(client, what, timeout):
-    """Waits until the goal of an actionlib SimpleActionClient has ended (its result received),
-    at most `timeout` [s] of wall time (the client's own wait counts simulated time); its
-    (actionlib_msgs/GoalStatus state, result)."""
-    from actionlib import SimpleGoalState  # only the action tests need actionlib
-    wait_until(lambda: client.simple_state == SimpleGoalState.DONE, what, timeout)
-    return client.get_state(), client.get_result()
+class GoalClient:
+    """An actionlib SimpleActionClient of one action server that keeps its goal's feedback; its
+    waits are bounded by `timeout` [s] of wall time (the client's own count simulated time)."""
+
+    def __init__(self, name, action_type, timeout):
+        import actionlib  # only the action tests need it
+        self.done_state = actionlib.SimpleGoalState.DONE
+        self.client = actionlib.SimpleActionClient(name, action_type)
+        self.timeout = timeout
+        self.feedback = []
+        # Connected both ways, or a goal sent now could be lost (simulated time flows meanwhile).
+        wait_until(lambda: self.client.wait_for_server(rospy.Duration(0.1)),
+                   'the %s action server' % name, timeout)
+
+    def send(self, goal):
+        self.feedback = []
+        self.client.send_goal(goal, feedback_cb=self.feedback.append)
+
+    def done(self):
+        """Whether the goal has ended (its result received)."""
+        return self.client.simple_state == self.done_state
+
+    def result(self, what):
+        """(actionlib_msgs/GoalStatus state, result) once the goal has ended."""
+        wait_until(self.done, what, self.timeout)
+        return self.client.get_state(), self.client.get_result()
+
+    def state(self):
+        return self.client.get_state()
+
+    def cancel(self):
+        self.client.cancel_goal()
 
 
 def publish_until(publisher, messages, condition, what, timeout):
