@@ -3,56 +3,52 @@
 
 Private params: ~targets (list of [x, y, z, qw, qx, qy, qz] in world, or [x, y, z] for the
 position only), ~dwell [s] simulated between a verdict and the next target, ~loop (false).
-Publishes goal (geometry_msgs/PoseStamped) and waits for freebot_ik's verdict on goal_result
-(arrived, unreachable, rejected or aborted) before the next one.
+A client of freebot_ik's move_freebot action (spherical_robots/MoveFreebotAction): each target is
+a goal, and the next one waits for its result (arrived, unreachable, rejected or aborted).
 """
 import time
 
+import actionlib
 import rospy
-from geometry_msgs.msg import PoseStamped
 
-from spherical_robots.msg import FreebotGoalResult
+from spherical_robots.msg import MoveFreebotAction, MoveFreebotGoal
 
-FINAL = (FreebotGoalResult.ARRIVED, FreebotGoalResult.UNREACHABLE, FreebotGoalResult.REJECTED,
-         FreebotGoalResult.ABORTED)
+WORLD_FRAME = 'world'
 
 
-def pose_of(target):
+def goal_of(target):
     if len(target) not in (3, 7):
         raise ValueError('a target is [x, y, z] or [x, y, z, qw, qx, qy, qz], got %r' % (target,))
-    goal = PoseStamped()
-    goal.header.frame_id = 'world'
-    goal.pose.position.x, goal.pose.position.y, goal.pose.position.z = target[:3]
+    goal = MoveFreebotGoal()
+    goal.target.header.frame_id = WORLD_FRAME
+    pose = goal.target.pose
+    pose.position.x, pose.position.y, pose.position.z = target[:3]
     if len(target) == 7:  # else all zero: position only
-        o = goal.pose.orientation
+        o = pose.orientation
         o.w, o.x, o.y, o.z = target[3:]
     return goal
 
 
 def main():
     rospy.init_node('goal_sequence')
-    goals = [pose_of(t) for t in rospy.get_param('~targets')]
+    goals = [goal_of(t) for t in rospy.get_param('~targets')]
     dwell = float(rospy.get_param('~dwell', 2.0))
     loop = bool(rospy.get_param('~loop', False))
-    verdicts = []
-    rospy.Subscriber('goal_result', FreebotGoalResult,
-                     lambda msg: verdicts.append(msg) if msg.status in FINAL else None)
-    publisher = rospy.Publisher('goal', PoseStamped, queue_size=1)
-    while not rospy.is_shutdown() and (rospy.Time.now().is_zero() or
-                                       publisher.get_num_connections() == 0):
-        time.sleep(0.1)  # the plant's clock and freebot_ik's subscription
-    rospy.sleep(1.0)     # and freebot_ik's first chain state
+    client = actionlib.SimpleActionClient('move_freebot', MoveFreebotAction)
+    while not rospy.is_shutdown() and rospy.Time.now().is_zero():
+        time.sleep(0.1)  # the plant's clock
+    client.wait_for_server()
     while not rospy.is_shutdown():
         for index, goal in enumerate(goals):
-            count = len(verdicts)
-            goal.header.stamp = rospy.Time.now()
-            publisher.publish(goal)
-            rospy.loginfo('target %d of %d: %s', index + 1, len(goals), goal.pose.position)
-            while not rospy.is_shutdown() and len(verdicts) == count:
-                rospy.sleep(0.1)
+            goal.target.header.stamp = rospy.Time.now()
+            client.send_goal(goal)
+            rospy.loginfo('target %d of %d: %s', index + 1, len(goals), goal.target.pose.position)
+            client.wait_for_result()
             if rospy.is_shutdown():
                 return
-            rospy.loginfo('target %d: %s', index + 1, verdicts[-1].message)
+            result = client.get_result()
+            rospy.loginfo('target %d: %s', index + 1,
+                          result.message if result else client.get_goal_status_text())
             rospy.sleep(dwell)
         if not loop:
             rospy.loginfo('all %d targets done', len(goals))

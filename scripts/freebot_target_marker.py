@@ -1,18 +1,24 @@
 #!/usr/bin/env python3
 """An interactive marker (Debian's python3-interactive-markers) to drag a FreeBOT chain's target
-in rviz: six rings and arrows in world; releasing the mouse publishes the pose on goal
-(geometry_msgs/PoseStamped), which freebot_ik solves and drives to. The marker's server is
+in rviz: six rings and arrows in world; releasing the mouse sends the pose as a goal of
+freebot_ik's move_freebot action (a newer goal preempts the one in force), which freebot_ik solves
+and drives to; its result is logged. The marker's server is
 `freebot_target` in the node's namespace (rviz: InteractiveMarkers, update topic
 freebot_target/update). It starts on ~initial ([x, y, z, qw, qx, qy, qz], Table II's A) and
-follows the goals others send (ik_target).
+follows the goals freebot_ik takes from any client (ik_target).
 
 Private params: ~initial, ~scale [m] (0.06), ~position_only (false: full pose goals).
 """
+import actionlib
 import rospy
 from geometry_msgs.msg import PoseStamped, Quaternion
 from interactive_markers.interactive_marker_server import InteractiveMarkerServer
 from visualization_msgs.msg import InteractiveMarker, InteractiveMarkerControl, \
     InteractiveMarkerFeedback, Marker
+
+from spherical_robots.msg import MoveFreebotAction, MoveFreebotGoal
+
+WORLD_FRAME = 'world'
 
 
 def axis_controls(marker):
@@ -32,11 +38,11 @@ def main():
     initial = rospy.get_param('~initial', [0.0036, 0.1636, 0.0924, 0.8610, 0.4687, 0.1356, 0.1437])
     scale = float(rospy.get_param('~scale', 0.06))
     position_only = bool(rospy.get_param('~position_only', False))
-    goal_pub = rospy.Publisher('goal', PoseStamped, queue_size=1)
+    client = actionlib.SimpleActionClient('move_freebot', MoveFreebotAction)
     server = InteractiveMarkerServer(rospy.get_name().split('/')[-1])
 
     marker = InteractiveMarker()
-    marker.header.frame_id = 'world'
+    marker.header.frame_id = WORLD_FRAME
     marker.name = 'target'
     marker.description = 'FreeBOT target (release to send)'
     marker.scale = scale
@@ -55,14 +61,18 @@ def main():
     def on_feedback(feedback):
         if feedback.event_type != InteractiveMarkerFeedback.MOUSE_UP:
             return
-        goal = PoseStamped()
-        goal.header.frame_id = 'world'
-        goal.header.stamp = rospy.Time.now()
-        goal.pose = feedback.pose
+        goal = MoveFreebotGoal()
+        goal.target.header.frame_id = WORLD_FRAME
+        goal.target.header.stamp = rospy.Time.now()
+        goal.target.pose = feedback.pose
         if position_only:
-            goal.pose.orientation = Quaternion(0.0, 0.0, 0.0, 0.0)  # all zero: position only
-        goal_pub.publish(goal)
+            goal.target.pose.orientation = Quaternion(0.0, 0.0, 0.0, 0.0)  # all zero: position only
+        client.send_goal(goal, done_cb=on_result)
         rospy.loginfo('target sent: %s', feedback.pose.position)
+
+    def on_result(_state, result):
+        if result is not None:
+            rospy.loginfo('target: %s', result.message)
 
     def on_target(msg):  # goals from elsewhere move the marker too
         o = msg.pose.orientation

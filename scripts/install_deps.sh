@@ -12,6 +12,8 @@ packages=(
   ros-base-dev libtf2-ros-dev libtf2-msgs-dev
   libnav-msgs-dev libvisualization-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev
   libdiagnostic-msgs-dev libstd-msgs-dev libstd-srvs-dev libdiagnostic-updater-dev
+  # the FreeBOT goals and the rotor manoeuvres as actions (action/)
+  libactionlib-dev libactionlib-msgs-dev
   # every node as a nodelet: the library, pluginlib, and the `nodelet` manager and loader
   libnodeletlib-dev pluginlib-dev libnodeletlib-tools
   # parameters changed while a stack runs: the C++ server, the cfg generator and the client
@@ -26,7 +28,7 @@ packages=(
   python3-rospy python3-roslaunch python3-rosbag python3-rosnode python3-rostopic rosbash
   python3-nav-msgs python3-geometry-msgs python3-sensor-msgs python3-diagnostic-msgs
   python3-std-msgs python3-std-srvs python3-tf2-ros python3-tf2-msgs python3-visualization-msgs
-  python3-diagnostic-updater python3-interactive-markers
+  python3-diagnostic-updater python3-interactive-markers python3-actionlib python3-actionlib-msgs
   ros-robot-state-publisher rviz xvfb xauth x11-utils imagemagick
   python3-numpy python3-matplotlib
   # derivations/derive_norma_dynamics.py

@@ -9,8 +9,9 @@ e.g.   roslaunch spherical_robots freebot_stack.launch duration:=28 record:=/tmp
        /usr/bin/python3 scripts/plot_freebot_run.py /tmp/freebot.bag /tmp/freebot.png
 
 Topics under <ns> (a topic missing there is looked up by its message type): freebot_state (the
-chain, as the plant integrates it from the measured wheel rates), goal, goal_result,
-actuators/command and actuators/state. Prints each goal's verdicts.
+chain, as the plant integrates it from the measured wheel rates), ik_target (each goal freebot_ik
+took, stamped when it took it), move_freebot/result (the move_freebot action's results: each
+goal's verdict), actuators/command and actuators/state. Prints each goal's verdict.
 """
 import math
 import os
@@ -26,10 +27,10 @@ from plot_support import (JOINT_STATE, RunError, attitude_angle, find_topic,  # 
                           open_bag, read_or_exit, run_figure_arguments)
 
 FREEBOT_STATE = 'spherical_robots/FreebotState'
-GOAL_RESULT = 'spherical_robots/FreebotGoalResult'
+ACTION_RESULT = 'spherical_robots/MoveFreebotActionResult'
 POSE_STAMPED = 'geometry_msgs/PoseStamped'
-VERDICTS = {0: 'MOVING', 1: 'ARRIVED', 2: 'UNREACHABLE', 3: 'REJECTED', 4: 'PREEMPTED',
-            5: 'ABORTED'}
+VERDICTS = {1: 'ARRIVED', 2: 'UNREACHABLE', 3: 'REJECTED', 4: 'PREEMPTED', 5: 'ABORTED'}
+ARRIVED = 1
 
 
 def quaternion(q):
@@ -46,8 +47,8 @@ def read_bag(path, ns):
     with open_bag(path) as (bag, topics):
         names = {
             'states': find_topic(topics, ns, 'freebot_state', FREEBOT_STATE),
-            'goals': find_topic(topics, ns, 'goal', POSE_STAMPED),
-            'results': find_topic(topics, ns, 'goal_result', GOAL_RESULT),
+            'goals': find_topic(topics, ns, 'ik_target', POSE_STAMPED),
+            'results': find_topic(topics, ns, 'move_freebot/result', ACTION_RESULT),
             'command': ns.rstrip('/') + '/actuators/command',
             'measured': ns.rstrip('/') + '/actuators/state'}
         if names['states'] is None:
@@ -56,7 +57,8 @@ def read_bag(path, ns):
         kind = {topic: key for key, topic in names.items() if topic}
         for topic, msg, bag_time in bag.read_messages(
                 topics=sorted(t for t in kind if t in topics)):
-            # A goal typed by hand is often stamped 0: it took effect when it was received.
+            # Older bags' ik_target echoed the goal's stamp, often 0 for one typed by hand: it took
+            # effect when it was received.
             key, stamp = kind[topic], msg.header.stamp.to_sec() or bag_time.to_sec()
             if key == 'states':
                 e = msg.end_effector
@@ -69,8 +71,9 @@ def read_bag(path, ns):
                 p = msg.pose.position
                 run['goals'].append((stamp, (p.x, p.y, p.z), quaternion(msg.pose.orientation)))
             elif key == 'results':
-                run['results'].append((stamp, msg.status, msg.position_error, msg.orientation_error,
-                                       msg.elapsed, msg.message))
+                r = msg.result
+                run['results'].append((stamp, r.status, r.position_error, r.orientation_error,
+                                       r.elapsed, r.message))
             elif topics[topic] == JOINT_STATE:
                 for name, rate in zip(msg.name, msg.velocity):
                     run[key].setdefault(name, []).append((stamp, rate))
@@ -115,8 +118,7 @@ def plot(run, out, title):
         a.semilogy([e[0] for e in errors], [max(e[2], 1e-9) for e in errors], 'r',
                    label='orientation [rad]')
     for stamp, status, *_ in run['results']:
-        if status != 0:
-            a.axvline(stamp, color='g' if status == 1 else 'k', linestyle=':')
+        a.axvline(stamp, color='g' if status == ARRIVED else 'k', linestyle=':')
     a.set_xlabel('t [s]'); a.set_title('error to the goal (dotted: verdicts)')
     a.legend(loc='best')
     a = fig.add_subplot(2, 3, 3)

@@ -2,11 +2,18 @@
 """rostest of the FreeBOT stack (launch/freebot_stack.launch, test/freebot_stack.test), headless,
 in simulated time, in the stack's namespace.
 
+The goals go through freebot_ik's move_freebot action, with actionlib's own client: arrival
+(succeeded, ARRIVED, the feedback on the way), an unreachable goal (aborted, nothing moves), a
+goal preempted by a second one while it moves (preempted, the second arrives), a cancel while it
+moves (preempted: the wheel commands go to zero and the chain stays put), a malformed goal
+(rejected, the goal in force goes on).
+
 Private params: ~frame_prefix; ~reachable ([x, y, z, qw, qx, qy, qz]: a full-pose goal the chain
-reaches), ~position_only ([x, y, z]: a position it reaches), ~unreachable (a goal it cannot); ~position_bound [m], ~orientation_bound [rad] on the
-end-effector's tf after arrival; ~arrival_time [s] simulated; ~hold_bound [m] on how far the
-end-effector may move after an unreachable verdict. The last test kills freebot_ik to fire the
-hardware's watchdog (docs/hardware_interface.md): it needs ideal actuators (exact zeros).
+reaches), ~position_only ([x, y, z]: a position it reaches), ~unreachable (a goal it cannot);
+~position_bound [m], ~orientation_bound [rad] on the end-effector's tf after arrival;
+~arrival_time [s] simulated; ~hold_bound [m] on how far the end-effector may move after an
+unreachable verdict. The last test kills freebot_ik to fire the hardware's watchdog
+(docs/hardware_interface.md): it needs ideal actuators (exact zeros).
 """
 import functools
 import math
@@ -16,11 +23,13 @@ import rosnode
 import rospy
 import rostest
 import tf2_ros
+from actionlib_msgs.msg import GoalStatus
 from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
-from geometry_msgs.msg import Pose, PoseStamped
+from geometry_msgs.msg import Pose
 from sensor_msgs.msg import JointState
 
-from spherical_robots.msg import FreebotGoalResult, FreebotState
+from spherical_robots.msg import (FreebotState, MoveFreebotAction, MoveFreebotFeedback,
+                                  MoveFreebotGoal, MoveFreebotResult)
 from spherical_robots.srv import SolveFreebotIk
 import spherical_robots_testing as testing
 from spherical_robots_testing import Recorder, first_at_rest, quaternion_angle
@@ -31,8 +40,7 @@ WALL_DEADLINE = 240.0  # [s] wall, for anything the stack should do in time
 IK_STATUS = 'freebot_ik: freebot ik'  # after the namespace: '<ns>/freebot_ik: freebot ik'
 PLANT_STATUS = 'freebot_plant: freebot plant'
 SLACK = 0.5  # [s] simulated: message latency at 5x real time (0.1 s of wall)
-FINAL = (FreebotGoalResult.ARRIVED, FreebotGoalResult.UNREACHABLE, FreebotGoalResult.REJECTED,
-         FreebotGoalResult.ABORTED)
+WORLD_FRAME = 'world'
 
 
 # Every wait of this script is bounded by WALL_DEADLINE.
@@ -49,6 +57,25 @@ def pose_of(values):
     return pose
 
 
+def goal_of(values):
+    goal = MoveFreebotGoal()
+    goal.target.header.frame_id = WORLD_FRAME
+    goal.target.header.stamp = rospy.Time.now()
+    goal.target.pose = pose_of(values)
+    return goal
+
+
+class MoveClient(testing.GoalClient):
+    """A client of move_freebot."""
+
+    def __init__(self):
+        super().__init__('move_freebot', MoveFreebotAction, WALL_DEADLINE)
+
+    def move(self, values):
+        """A goal [x, y, z] or [x, y, z, qw, qx, qy, qz] in the world."""
+        self.send(goal_of(values))
+
+
 class FreebotStackCheck(unittest.TestCase):
 
     @classmethod
@@ -59,15 +86,14 @@ class FreebotStackCheck(unittest.TestCase):
         cls.end_frame = cls.prefix + 'link%d' % cls.modules
         cls.reachable = [float(v) for v in rospy.get_param('~reachable')]
         cls.unreachable = [float(v) for v in rospy.get_param('~unreachable')]
-        cls.results = Recorder('goal_result', FreebotGoalResult)
         cls.states = Recorder('freebot_state', FreebotState)
         cls.actuators = Recorder('actuators/state', JointState)
         cls.diagnostics = Recorder('/diagnostics', DiagnosticArray)
         cls.tf_buffer = tf2_ros.Buffer()
         cls.tf_listener = tf2_ros.TransformListener(cls.tf_buffer)
-        cls.goal_pub = rospy.Publisher('goal', PoseStamped, queue_size=1)
+        cls.commands = Recorder('actuators/command', JointState)
         wait_until(lambda: cls.states.count() > 0, 'the first freebot_state message')
-        wait_until(lambda: cls.goal_pub.get_num_connections() > 0, 'freebot_ik on goal')
+        cls.goals = MoveClient()
 
     def end_effector(self):
         """B_n's centre and orientation (w, x, y, z) in world, from tf."""
@@ -76,17 +102,16 @@ class FreebotStackCheck(unittest.TestCase):
         return ((t.translation.x, t.translation.y, t.translation.z),
                 (t.rotation.w, t.rotation.x, t.rotation.y, t.rotation.z))
 
-    def send(self, values):
-        """Publishes a goal and returns freebot_ik's final verdict on it."""
-        count = self.results.count()
-        goal = PoseStamped()
-        goal.header.frame_id = 'world'
-        goal.header.stamp = rospy.Time.now()
-        goal.pose = pose_of(values)
-        self.goal_pub.publish(goal)
-        wait_until(lambda: any(r.status in FINAL for r in self.results.since(count)),
-                   'a verdict on goal_result')
-        return next(r for r in self.results.since(count) if r.status in FINAL)
+    def send(self, values, what='the verdict'):
+        """Sends a goal and returns its final (state, result)."""
+        self.goals.move(values)
+        return self.goals.result(what)
+
+    def wait_moving(self):
+        """Until a wheel turns faster than 1 rad/s."""
+        count = self.actuators.count()
+        wait_until(lambda: any(abs(v) > 1.0 for m in self.actuators.since(count) for v in m.velocity),
+                   'a wheel faster than 1 rad/s')
 
     def ik_status(self, since):
         return self.status(IK_STATUS, since)
@@ -123,8 +148,19 @@ class FreebotStackCheck(unittest.TestCase):
         """A full-pose goal: the end-effector's tf arrives within the bounds, in time, and the
         spheres stay in contact (centre distances l_{i-1} + l_i)."""
         start = rospy.Time.now().to_sec()
-        verdict = self.send(self.reachable)
-        self.assertEqual(verdict.status, FreebotGoalResult.ARRIVED, verdict.message)
+        before = self.end_effector()[0]
+        state, verdict = self.send(self.reachable)
+        self.assertEqual(state, GoalStatus.SUCCEEDED, verdict.message)
+        self.assertEqual(verdict.status, MoveFreebotResult.ARRIVED, verdict.message)
+        # The feedback on the way: moving, from the chain at rest (its first step's measurement)
+        # to the arrival, the time since the goal growing.
+        feedback = self.goals.feedback
+        self.assertGreater(len(feedback), 100)
+        self.assertTrue(all(f.status == MoveFreebotFeedback.MOVING for f in feedback))
+        self.assertAlmostEqual(feedback[0].position_error, math.dist(before, self.reachable[:3]),
+                               delta=1e-9)
+        self.assertEqual([f.elapsed for f in feedback], sorted(f.elapsed for f in feedback))
+        self.assertLess(feedback[-1].position_error, 0.01 * feedback[0].position_error)
         sim_sleep(0.2)  # tf at 50 Hz
         position, orientation = self.end_effector()
         position_error = math.dist(position, self.reachable[:3])
@@ -145,8 +181,10 @@ class FreebotStackCheck(unittest.TestCase):
     def test_03_position_only(self):
         """A goal with an all-zero orientation: B_n's centre arrives, whatever its orientation."""
         target = [float(v) for v in rospy.get_param('~position_only')]
-        verdict = self.send(target)
-        self.assertEqual(verdict.status, FreebotGoalResult.ARRIVED, verdict.message)
+        state, verdict = self.send(target)
+        self.assertEqual(state, GoalStatus.SUCCEEDED, verdict.message)
+        self.assertEqual(verdict.status, MoveFreebotResult.ARRIVED, verdict.message)
+        self.assertEqual(verdict.orientation_error, 0.0)
         sim_sleep(0.2)
         position_error = math.dist(self.end_effector()[0], target)
         rospy.loginfo('position only: arrived after %.2f s (simulated), %.3g m from the goal (tf)',
@@ -155,13 +193,14 @@ class FreebotStackCheck(unittest.TestCase):
         self.assertLessEqual(verdict.elapsed, float(rospy.get_param('~arrival_time')))
 
     def test_04_unreachable(self):
-        """A goal out of reach: a clear verdict (goal_result, /diagnostics WARN) and nothing moves:
-        the wheels stay at rest and the end-effector holds its pose."""
+        """A goal out of reach: aborted with a clear verdict (UNREACHABLE, /diagnostics WARN) and
+        nothing moves: the wheels stay at rest and the end-effector holds its pose."""
         before = self.end_effector()[0]
         diagnostics_index = self.diagnostics.count()
         actuators_index = self.actuators.count()
-        verdict = self.send(self.unreachable)
-        self.assertEqual(verdict.status, FreebotGoalResult.UNREACHABLE, verdict.message)
+        state, verdict = self.send(self.unreachable)
+        self.assertEqual(state, GoalStatus.ABORTED, verdict.message)
+        self.assertEqual(verdict.status, MoveFreebotResult.UNREACHABLE, verdict.message)
         self.assertIn('unreachable', verdict.message)
         self.assertIn('beyond the reach', verdict.message)
         self.assertGreater(verdict.position_error, 0.0)
@@ -179,7 +218,67 @@ class FreebotStackCheck(unittest.TestCase):
         self.assertLess(fastest, 1e-9)
         self.assertLess(moved, float(rospy.get_param('~hold_bound')))
 
-    def test_05_bad_measurements_kill_nothing(self):
+    def test_05_a_second_goal_preempts_the_first(self):
+        """A second goal while the first moves: the first is preempted (its errors as measured),
+        the second arrives."""
+        second = MoveClient()
+        self.goals.move(self.reachable)
+        self.wait_moving()
+        target = [float(v) for v in rospy.get_param('~position_only')]
+        second.move(target)
+        state, verdict = self.goals.result('the first goal preempted')
+        self.assertEqual(state, GoalStatus.PREEMPTED, verdict.message)
+        self.assertEqual(verdict.status, MoveFreebotResult.PREEMPTED, verdict.message)
+        self.assertGreater(verdict.position_error, float(rospy.get_param('~position_bound')))
+        self.assertGreater(verdict.elapsed, 0.0)
+        state, verdict = second.result('the second goal to arrive')
+        self.assertEqual(state, GoalStatus.SUCCEEDED, verdict.message)
+        self.assertEqual(verdict.status, MoveFreebotResult.ARRIVED, verdict.message)
+        sim_sleep(0.2)
+        self.assertLessEqual(math.dist(self.end_effector()[0], target),
+                             float(rospy.get_param('~position_bound')))
+
+    def test_06_cancel_stops_the_chain(self):
+        """A cancel while the chain moves: preempted; from the step that took it every wheel
+        command is zero, and once the wheels have stopped the chain stays put."""
+        self.goals.move(self.reachable)
+        self.wait_moving()
+        self.goals.cancel()
+        state, verdict = self.goals.result('the canceled goal to end')
+        self.assertEqual(state, GoalStatus.PREEMPTED, verdict.message)
+        self.assertEqual(verdict.status, MoveFreebotResult.PREEMPTED, verdict.message)
+        ended = rospy.Time.now().to_sec()
+        sim_sleep(1.0)  # the wheels ramp down at the hardware's 50 rad/s^2 (0.2 s from 10 rad/s)
+        before = self.end_effector()[0]
+        commands = [(c.header.stamp.to_sec(), c.velocity) for c in self.commands.since(0)]
+        moving = [t for t, velocity in commands if any(v != 0.0 for v in velocity)]
+        after = [velocity for t, velocity in commands if t > moving[-1]]
+        sim_sleep(1.0)
+        moved = math.dist(before, self.end_effector()[0])
+        rospy.loginfo('cancel: the last moving command at %.2f s, the result received at %.2f s '
+                      '(simulated); then %d zero commands; the end-effector moved %.3g m',
+                      moving[-1], ended, len(after), moved)
+        self.assertLessEqual(moving[-1], ended)
+        self.assertGreater(len(after), 50)  # 100 Hz: the zeros went on
+        self.assertLess(moved, 1e-12)
+
+    def test_07_a_malformed_goal_is_rejected_and_the_goal_in_force_goes_on(self):
+        """A goal with a NaN coordinate while another moves: rejected at once, naming the field;
+        the goal in force arrives."""
+        bad = MoveClient()
+        self.goals.move(self.reachable)
+        self.wait_moving()
+        bad.move([float('nan')] + list(self.reachable[1:]))
+        state, verdict = bad.result('the malformed goal rejected')
+        self.assertEqual(state, GoalStatus.REJECTED, verdict.message)
+        self.assertEqual(verdict.status, MoveFreebotResult.REJECTED, verdict.message)
+        self.assertIn('target.pose.position', verdict.message)
+        self.assertEqual(verdict.position_error, -1.0)
+        state, verdict = self.goals.result('the goal in force to arrive')
+        self.assertEqual(state, GoalStatus.SUCCEEDED, verdict.message)
+        self.assertEqual(verdict.status, MoveFreebotResult.ARRIVED, verdict.message)
+
+    def test_08_bad_measurements_kill_nothing(self):
         """A NaN and an incomplete actuators/state are rejected, counted on /diagnostics, and the
         plant keeps publishing."""
         publisher = rospy.Publisher('actuators/state', JointState, queue_size=10)
@@ -196,7 +295,7 @@ class FreebotStackCheck(unittest.TestCase):
         self.assertGreater(self.states.count(), count + 50, 'freebot_state stopped')
         self.assertTrue(all(math.isfinite(v) for v in self.end_effector()[0]))
 
-    def test_06_watchdog_when_ik_dies(self):
+    def test_09_watchdog_when_ik_dies(self):
         """Killing freebot_ik mid-motion: the hardware's watchdog brings every wheel to rest within
         command_timeout + |v|/max_acceleration + one period of the last command, and the chain
         stops."""
@@ -205,15 +304,9 @@ class FreebotStackCheck(unittest.TestCase):
         acceleration = float(rospy.get_param(hardware + '/max_acceleration'))
         period = 1.0 / float(rospy.get_param(hardware + '/rate'))
         commands = Recorder('actuators/command', JointState)
-        count = self.results.count()
-        goal = PoseStamped()
-        goal.header.frame_id = 'world'
-        goal.pose = pose_of(self.reachable)
-        self.goal_pub.publish(goal)
-        wait_until(lambda: any(r.status == FreebotGoalResult.MOVING for r in self.results.since(count)),
-                   'freebot_ik to start moving')
-        wait_until(lambda: max(abs(v) for v in self.actuators.since(-1)[0].velocity) > 1.0,
-                   'a wheel faster than 1 rad/s')
+        self.goals.move(self.reachable)
+        wait_until(lambda: self.goals.feedback, 'freebot_ik to start moving (feedback)')
+        self.wait_moving()
         speed = max(abs(v) for v in self.actuators.since(-1)[0].velocity)
         node = rospy.resolve_name('freebot_ik')
         rosnode.kill_nodes([node])

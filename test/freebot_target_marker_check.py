@@ -4,7 +4,8 @@ server spoken to as rviz speaks to it, on the real topics of Debian's interactiv
 (<server>/update_full, <server>/update, <server>/feedback):
   1. the marker 'target' is offered in world at ~initial (Table II's target A);
   2. a drag (POSE_UPDATE feedback) sends no goal; the release (MOUSE_UP) sends exactly the
-     released pose as a goal in world;
+     released pose as a goal in world of the move_freebot action (recorded on its goal topic;
+     no action server runs here);
   3. a goal from elsewhere (ik_target) moves the marker; a position-only one (zero quaternion)
      keeps the marker's orientation.
 ~position_only (false): the node runs with ~position_only, so the goal's quaternion is all zero.
@@ -17,6 +18,8 @@ import rostest
 from geometry_msgs.msg import Pose, PoseStamped
 from visualization_msgs.msg import InteractiveMarkerFeedback, InteractiveMarkerInit, \
     InteractiveMarkerUpdate
+
+from spherical_robots.msg import MoveFreebotActionGoal
 
 from spherical_robots_testing import Recorder, wait_until
 
@@ -38,7 +41,7 @@ class FreebotTargetMarkerCheck(unittest.TestCase):
         server = rospy.get_param('~server', 'freebot_target')
         cls.inits = Recorder(server + '/update_full', InteractiveMarkerInit)
         cls.updates = Recorder(server + '/update', InteractiveMarkerUpdate)
-        cls.goals = Recorder('goal', PoseStamped)
+        cls.goals = Recorder('move_freebot/goal', MoveFreebotActionGoal)
         cls.feedback = rospy.Publisher(server + '/feedback', InteractiveMarkerFeedback,
                                        queue_size=10)
         cls.ik_target = rospy.Publisher('ik_target', PoseStamped, queue_size=10)
@@ -99,7 +102,7 @@ class FreebotTargetMarkerCheck(unittest.TestCase):
         time.sleep(0.5)
         goals = self.goals.since(0)
         self.assertEqual(len(goals), 1)
-        goal = goals[0]
+        goal = goals[0].goal.target
         self.assertEqual(goal.header.frame_id, 'world')
         expected = pose_list(released)
         if rospy.get_param('~position_only', False):

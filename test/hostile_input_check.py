@@ -30,16 +30,15 @@ import rospy
 import rostest
 import rostopic
 from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
-from geometry_msgs.msg import PoseStamped
 from nav_msgs.msg import Odometry
 from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import JointState
-from std_msgs.msg import UInt32
 
-from spherical_robots.msg import (FreebotGoalResult, FreebotState, NormaState, TerrainState,
+from spherical_robots.msg import (ExecuteRotorManoeuvreAction, ExecuteRotorManoeuvreGoal,
+                                  FreebotState, MoveFreebotAction, MoveFreebotActionGoal,
+                                  MoveFreebotGoal, MoveFreebotResult, NormaState, TerrainState,
                                   TrackingError)
-from spherical_robots.srv import PlanRotorMotion, PlanRotorMotionRequest
-from spherical_robots_testing import wait_until
+from spherical_robots_testing import GoalClient, wait_until
 
 NAN = float('nan')
 INF = float('inf')
@@ -174,12 +173,17 @@ def freebot_state_cases(last):
 
 
 def goal_cases(_last):
+    """Malformed goals of the move_freebot action, as a client's goal topic carries them. The
+    action server takes a goal id once (a repeat is the same goal): one id per case."""
     def goal(x, y, z, qw=1.0, frame='world'):
-        msg = PoseStamped()
-        msg.header.frame_id = frame
-        msg.header.stamp = rospy.Time.now()
-        msg.pose.position.x, msg.pose.position.y, msg.pose.position.z = x, y, z
-        msg.pose.orientation.w = qw
+        msg = MoveFreebotActionGoal()
+        msg.header.stamp = msg.goal_id.stamp = rospy.Time.now()
+        msg.goal_id.id = 'hostile %r %r %r %r %s' % (x, y, z, qw, frame)
+        target = msg.goal.target
+        target.header.frame_id = frame
+        target.header.stamp = rospy.Time.now()
+        target.pose.position.x, target.pose.position.y, target.pose.position.z = x, y, z
+        target.pose.orientation.w = qw
         return msg
     return [('goal NaN', goal(NAN, 0.1, 0.1)), ('goal 1e300', goal(HUGE, 0.1, 0.1)),
             ('goal -Inf', goal(0.1, -INF, 0.1)), ('goal non-unit', goal(0.1, 0.1, 0.1, 5.0)),
@@ -225,7 +229,7 @@ STACKS = {
         'joint_topics': [('actuators/state', wheel_names(4), 'velocity'),
                          ('actuators/command', wheel_names(4), 'velocity')],
         'states': [('freebot_state', FreebotState, freebot_state_cases),
-                   ('goal', PoseStamped, goal_cases, False)],
+                   ('move_freebot/goal', MoveFreebotActionGoal, goal_cases, False)],
         'tracking': False,
     },
 }
@@ -253,10 +257,6 @@ class HostileInput(unittest.TestCase):
         cls.last_state = {}
         for topic, msg_type, *_ in cls.spec['states']:
             rospy.Subscriber(topic, msg_type, cls.on_state, callback_args=topic, queue_size=10)
-        cls.results = []  # FreeBOT verdicts
-        cls.done = []     # rotor execution_done
-        rospy.Subscriber('goal_result', FreebotGoalResult, cls.results.append, queue_size=100)
-        rospy.Subscriber('execution_done', UInt32, cls.done.append, queue_size=10)
         if cls.stack == 'rotor':
             cls.start_manoeuvre()
         if cls.stack == 'freebot':
@@ -267,33 +267,26 @@ class HostileInput(unittest.TestCase):
 
     @classmethod
     def start_manoeuvre(cls):
-        """Plans ~target and executes it: the bursts arrive while the rotors drive it."""
+        """Plans ~target and executes it (execute_manoeuvre): the bursts arrive while the rotors
+        drive it."""
         u, v, psi = (float(x) for x in str(rospy.get_param('~target')).split(','))
         cls.target = (u, v)
-        rospy.wait_for_service('rotor_planner/plan', timeout=60.0)
-        response = rospy.ServiceProxy('rotor_planner/plan', PlanRotorMotion)(
-            PlanRotorMotionRequest(k=2.5, steps=2, u_a=u, v_a=v, psi=psi))
-        assert response.success, response.reason
-        publisher = rospy.Publisher('rotor_planner/execute', UInt32, queue_size=1, latch=True)
-        wait_until(lambda: publisher.get_num_connections() > 0, 'rotor_planner/execute', 20.0)
-        publisher.publish(UInt32(0))
-        cls.execute_pub = publisher
+        cls.goal = GoalClient('rotor_planner/execute_manoeuvre', ExecuteRotorManoeuvreAction, 60.0)
+        cls.goal.send(ExecuteRotorManoeuvreGoal(k=2.5, steps=2, u_a=u, v_a=v, psi=psi))
 
     @classmethod
     def send_goal(cls):
         """Table II's C (reachable as a full pose with 4 modules), driven while the bursts come."""
-        goal = PoseStamped()
-        goal.header.frame_id = 'world'
-        goal.pose.position.x, goal.pose.position.y, goal.pose.position.z = 0.0924, 0.1597, 0.1154
-        q = goal.pose.orientation
+        goal = MoveFreebotGoal()
+        goal.target.header.frame_id = 'world'
+        position, q = goal.target.pose.position, goal.target.pose.orientation
+        position.x, position.y, position.z = 0.0924, 0.1597, 0.1154
         q.w, q.x, q.y, q.z = 0.9682, 0.0874, 0.2220, 0.0756
-        cls.goal_pub = rospy.Publisher('goal', PoseStamped, queue_size=1, latch=True)
-        wait_until(lambda: cls.goal_pub.get_num_connections() > 0, 'freebot_ik', 30.0)
+        cls.goal = GoalClient('move_freebot', MoveFreebotAction, 120.0)
         wait_until(lambda: 'freebot_state' in cls.last_state, 'a chain state', 30.0)
-        goal.header.stamp = rospy.Time.now()
-        cls.goal_pub.publish(goal)
-        wait_until(lambda: any(r.status == FreebotGoalResult.MOVING for r in cls.results),
-                   'the goal to be taken (MOVING)', 30.0)
+        goal.target.header.stamp = rospy.Time.now()
+        cls.goal.send(goal)
+        wait_until(lambda: cls.goal.feedback, 'the goal to be taken (feedback)', 30.0)
 
     @classmethod
     def watch_new_topics(cls, _event=None):
@@ -452,7 +445,7 @@ class HostileInput(unittest.TestCase):
         # test sends the good (zero) commands itself, one in five, and for 3 s after the burst.
         own_good = self.stack == 'rotor'
         if own_good:
-            wait_until(lambda: self.done, 'the manoeuvre to end', 120.0)
+            wait_until(self.goal.done, 'the manoeuvre to end', 120.0)
         good = JointState(name=list(names))
         setattr(good, field, [0.0] * len(names))
         start = time.time()
@@ -494,19 +487,15 @@ class HostileInput(unittest.TestCase):
         """What the bursts must not have spoiled: the rotor manoeuvre ends at its target, the
         FreeBOT goal is ARRIVED (never ABORTED, never timed out by a stamp from the future)."""
         if self.stack == 'rotor':
-            wait_until(lambda: self.done, 'execution_done', 120.0)
+            wait_until(self.goal.done, 'the manoeuvre to end', 120.0)
             time.sleep(0.5)
             x, y = _rest_position(self.last_state['odom'])
             miss = math.hypot(x - self.target[0], y - self.target[1])
             self.assertLess(miss, self.error_bound, 'the manoeuvre ended %.2e m off its target'
                             % miss)
         elif self.stack == 'freebot':
-            final = (FreebotGoalResult.ARRIVED, FreebotGoalResult.ABORTED,
-                     FreebotGoalResult.UNREACHABLE)
-            wait_until(lambda: any(r.status in final for r in self.results), 'a final verdict',
-                       120.0)
-            verdict = next(r for r in self.results if r.status in final)
-            self.assertEqual(verdict.status, FreebotGoalResult.ARRIVED, verdict.message)
+            _, verdict = self.goal.result('a final verdict')
+            self.assertEqual(verdict.status, MoveFreebotResult.ARRIVED, verdict.message)
 
 
 def _rest_position(odometry):

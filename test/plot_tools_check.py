@@ -29,8 +29,8 @@ import rostest
 from geometry_msgs.msg import Point, Pose, PoseStamped, Quaternion
 from nav_msgs.msg import Odometry, Path
 from sensor_msgs.msg import JointState
-from spherical_robots.msg import (FreebotGoalResult, FreebotState, NormaState, TerrainState,
-                                  TrackingError)
+from spherical_robots.msg import (FreebotState, MoveFreebotActionResult, MoveFreebotResult,
+                                  NormaState, TerrainState, TrackingError)
 
 # The plotting tools are user programs in scripts/, beside this test's directory.
 SCRIPTS = os.path.join(os.path.dirname(os.path.realpath(__file__)), '..', 'scripts')
@@ -175,11 +175,12 @@ class PlotToolsCheck(unittest.TestCase):
                             (2.0, Pose(Point(0.1, 0.0, 0.0), Quaternion(0.0, 0.0, 0.0, 0.0)))):
                 message = PoseStamped(pose=goal)
                 message.header.stamp = stamp(t)
-                bag.write('/freebot/goal', message, stamp(t))
-            result = FreebotGoalResult(status=FreebotGoalResult.ARRIVED, goal=goal,
-                                       position_error=2e-5, orientation_error=3e-5, elapsed=1.0)
+                bag.write('/freebot/ik_target', message, stamp(t))
+            result = MoveFreebotActionResult()
             result.header.stamp = stamp(1.5)
-            bag.write('/freebot/goal_result', result, stamp(1.5))
+            result.result = MoveFreebotResult(status=MoveFreebotResult.ARRIVED, position_error=2e-5,
+                                              orientation_error=3e-5, elapsed=1.0)
+            bag.write('/freebot/move_freebot/result', result, stamp(1.5))
         return bag_path
 
     def test_freebot_errors_closed_form(self):

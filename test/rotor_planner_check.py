@@ -2,8 +2,10 @@
 """rostest of rotor_planner (test/rotor_planner.test): the service against the paper's published
 k = 2.5 solution (Svinin et al., section IV: h = R along +v_a with a1 = 0.300429 R,
 gamma = 0.931883), the latched path and marker of the shortest plan, and the answers to a target
-out of reach and to an invalid request, and what /diagnostics says of refused requests and of an
-odom that is not finite (ignored, counted, the node alive). ~node names the node (relative)."""
+out of reach and to an invalid request, and what /diagnostics says of refused requests (a plan
+request, a goal of the execute_manoeuvre action with a plan_index beyond the plans: rejected) and
+of an odom that is not finite (ignored, counted, the node alive). ~node names the node
+(relative)."""
 import math
 import threading
 import time
@@ -11,13 +13,15 @@ import unittest
 
 import rospy
 import rostest
+from actionlib_msgs.msg import GoalStatus
 from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
 from nav_msgs.msg import Odometry, Path
-from std_msgs.msg import UInt32
 from visualization_msgs.msg import Marker
+from spherical_robots.msg import (ExecuteRotorManoeuvreAction, ExecuteRotorManoeuvreGoal,
+                                  ExecuteRotorManoeuvreResult)
 from spherical_robots.srv import PlanRotorMotion, PlanRotorMotionRequest
 
-from spherical_robots_testing import Recorder, wait_until
+from spherical_robots_testing import GoalClient, Recorder, wait_until
 
 PKG = 'spherical_robots'
 NAME = 'rotor_planner_check'
@@ -28,6 +32,7 @@ class RotorPlannerCheck(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         node = rospy.resolve_name(rospy.get_param('~node', 'rotor_planner'))
+        cls.node = node
         cls.radius = float(rospy.get_param(node + '/sphere_radius'))
         rospy.wait_for_service(node + '/plan', timeout=30.0)
         cls.plan = rospy.ServiceProxy(node + '/plan', PlanRotorMotion)
@@ -130,9 +135,14 @@ class RotorPlannerCheck(unittest.TestCase):
         status = self.wait_for_status(lambda s: s.level == DiagnosticStatus.WARN
                                       and 'steps' in s.message, 'the refused request')
         self.assertIn('steps', dict((v.key, v.value) for v in status.values)['last problem'])
-        execute = rospy.Publisher('rotor_planner/execute', UInt32, queue_size=1, latch=True)
-        execute.publish(UInt32(99))
-        self.wait_for_status(lambda s: 'execute 99 refused' in s.message, 'the refused execute')
+        client = GoalClient(self.node + '/execute_manoeuvre', ExecuteRotorManoeuvreAction, 30.0)
+        client.send(ExecuteRotorManoeuvreGoal(k=2.5, steps=1, u_a=0.0, v_a=self.radius,
+                                              plan_index=99))
+        state, result = client.result('the goal rejected')
+        self.assertEqual(state, GoalStatus.REJECTED, result.message)
+        self.assertEqual(result.status, ExecuteRotorManoeuvreResult.REJECTED)
+        self.assertIn('plan_index 99 refused', result.message)
+        self.wait_for_status(lambda s: 'plan_index 99 refused' in s.message, 'the refused goal')
         odom = rospy.Publisher('odom', Odometry, queue_size=10)
         unset = Odometry()  # an all-zero orientation: no attitude
         self.publish_until_rejected(odom, unset, 'has norm 0, expected a unit quaternion')

@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "spherical_robots/ros/freebot_conversions.hpp"
 
@@ -57,6 +58,58 @@ TEST(FreebotConversion, ChainStateRoundTripAndRejections) {
   msg.heading.back() = 0.0;
   msg.link[1].w = 2.0;  // not unit
   EXPECT_THROW(sr::conversions::chainStateFromMsg(msg), std::invalid_argument);
+}
+
+TEST(FreebotConversion, AGoalsTargetAndItsRejections) {
+  geometry_msgs::PoseStamped target;
+  target.pose.position.x = 0.1;
+  target.pose.position.z = -0.2;
+  // An all-zero orientation, an empty frame: the position only, in the world.
+  sr::freebot::GoalPose goal = sr::conversions::goalPoseFromMsg(target, "world", 1.0, 1e-3);
+  EXPECT_EQ(goal.mode, sr::freebot::IkMode::PositionOnly);
+  EXPECT_EQ(goal.position, Eigen::Vector3d(0.1, 0.0, -0.2));
+  // A unit quaternion, (x, y, z, w) in the message: the full pose.
+  target.header.frame_id = "world";
+  target.pose.orientation.x = 0.6;
+  target.pose.orientation.w = 0.8;
+  goal = sr::conversions::goalPoseFromMsg(target, "world", 1.0, 1e-3);
+  EXPECT_EQ(goal.mode, sr::freebot::IkMode::FullPose);
+  EXPECT_LT(goal.orientation.angularDistance(Eigen::Quaterniond(0.8, 0.6, 0.0, 0.0)), 1e-15);
+  const auto rejects = [&](const geometry_msgs::PoseStamped& bad, const std::string& field) {
+    try {
+      sr::conversions::goalPoseFromMsg(bad, "world", 1.0, 1e-3);
+      ADD_FAILURE() << "accepted; expected a rejection naming " << field;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  };
+  geometry_msgs::PoseStamped bad = target;
+  bad.header.frame_id = "map2";
+  rejects(bad, "frame_id 'map2'");
+  bad = target;
+  bad.pose.position.y = std::numeric_limits<double>::quiet_NaN();
+  rejects(bad, "target.pose.position");
+  bad = target;
+  bad.pose.position.x = 1.5;  // beyond max_distance
+  rejects(bad, "target.pose.position");
+  bad = target;
+  bad.pose.orientation.w = 1.6;  // norm 1.7
+  rejects(bad, "target.pose.orientation");
+}
+
+// The verdict's codes are the action's: the result and the feedback carry a verdict's numbers.
+TEST(FreebotConversion, VerdictsBecomeResultsAndFeedback) {
+  sr::freebot::GoalVerdict verdict{sr::freebot::GoalStatus::Aborted, 2e-3, 0.1, 7.5, 2, "why"};
+  const spherical_robots::MoveFreebotResult result = sr::conversions::toMoveFreebotResult(verdict);
+  EXPECT_EQ(result.status, spherical_robots::MoveFreebotResult::ABORTED);
+  EXPECT_EQ(result.position_error, 2e-3);
+  EXPECT_EQ(result.orientation_error, 0.1);
+  EXPECT_EQ(result.elapsed, 7.5);
+  EXPECT_EQ(result.replans, 2u);
+  EXPECT_EQ(result.message, "why");
+  verdict.status = sr::freebot::GoalStatus::Moving;
+  EXPECT_EQ(sr::conversions::toMoveFreebotFeedback(verdict).status,
+            spherical_robots::MoveFreebotFeedback::MOVING);
 }
 
 // The chain's transforms composed from the world give each sphere's pose by the manipulator's

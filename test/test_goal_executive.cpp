@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "spherical_robots/freebot/goal_executive.hpp"
@@ -28,7 +29,6 @@ using spherical_robots::freebot::GoalPose;
 using spherical_robots::freebot::GoalStatus;
 using spherical_robots::freebot::GoalVerdict;
 using spherical_robots::freebot::IkMode;
-using spherical_robots::freebot::kNotMeasured;
 using spherical_robots::freebot::SrcJointState;
 using spherical_robots::freebot::TrolleyGeometry;
 using spherical_robots::freebot::WheelSpeeds;
@@ -106,8 +106,8 @@ class Loop {
     stepOnce();  // a first measurement to plan from
   }
 
-  /// Accepts the goal now and keeps its verdicts.
-  std::vector<GoalVerdict> accept(const GoalPose& goal) {
+  /// Accepts the goal now; its verdict.
+  GoalVerdict accept(const GoalPose& goal) {
     goal_ = goal;
     accepted_ = t_;
     return executive_.accept(goal, t_);
@@ -129,6 +129,7 @@ class Loop {
 
   /// One step; also checks the wheel limit every step.
   ExecutiveStep stepOnce() {
+    measured_ = state_;
     const ExecutiveStep step = executive_.step(t_, state_);
     for (const WheelSpeeds& w : step.wheels) {
       EXPECT_LE(std::abs(w.right), executive_.parameters().limits.max_wheel_speed + 1e-12);
@@ -149,6 +150,9 @@ class Loop {
   const FreebotChain& chain() const { return chain_; }
   GoalExecutive& executive() { return executive_; }
   const ChainState& state() const { return state_; }
+  /// The state the last step measured (state() is where its wheels took the chain).
+  const ChainState& measured() const { return measured_; }
+  Nanoseconds now() const { return t_; }
   const GoalPose& goal() const { return goal_; }
   /// [s] from the goal's acceptance to the step at t.
   double secondsSinceAccepted(Nanoseconds t) const {
@@ -159,6 +163,7 @@ class Loop {
   FreebotChain chain_;
   GoalExecutive executive_;
   ChainState state_;
+  ChainState measured_;
   Nanoseconds t_ = kStart;
   Nanoseconds accepted_ = 0;
   GoalPose goal_;
@@ -202,10 +207,9 @@ void expectHolds(Loop& loop) {
 TEST(GoalExecutive, ArrivesAtTargetAWithinTheGoalTolerances) {
   const GoalExecutiveParameters parameters;
   Loop loop(kTableII, parameters);
-  const std::vector<GoalVerdict> planned = loop.accept(targetA());
-  ASSERT_EQ(planned.size(), 1u);
+  const GoalVerdict planned = loop.accept(targetA());
   const ExecutiveStep first = loop.stepOnce();
-  expectSolved(loop.chain(), planned[0], first.joint_targets, loop.goal(), parameters);
+  expectSolved(loop.chain(), planned, first.joint_targets, loop.goal(), parameters);
 
   const std::vector<Event> events = loop.runUntilDone(60.0);
   ASSERT_EQ(events.size(), 1u);
@@ -225,7 +229,7 @@ TEST(GoalExecutive, ArrivesAtTargetAWithinTheGoalTolerances) {
 TEST(GoalExecutive, RePlansWhenUnequalRadiiReachTheContactPointsButNotThePose) {
   const GoalExecutiveParameters parameters;
   Loop loop(kUnequal, parameters);
-  ASSERT_EQ(loop.accept(targetA()).front().status, GoalStatus::Moving);
+  ASSERT_EQ(loop.accept(targetA()).status, GoalStatus::Moving);
   const ExecutiveStep first = loop.stepOnce();
   const std::vector<Event> events = loop.runUntilDone(60.0);
   ASSERT_GE(events.size(), 2u);
@@ -245,6 +249,7 @@ TEST(GoalExecutive, RePlansWhenUnequalRadiiReachTheContactPointsButNotThePose) {
     EXPECT_NE(replan.verdict.message.find("re-plan " + std::to_string(k + 1) + " of 3"),
               std::string::npos)
         << replan.verdict.message;
+    EXPECT_EQ(replan.verdict.replans, static_cast<int>(k + 1));
   }
   const Event& arrival = events.back();
   ASSERT_EQ(arrival.verdict.status, GoalStatus::Arrived) << arrival.verdict.message;
@@ -298,32 +303,60 @@ TEST(GoalExecutive, AnUnreachableGoalMovesNothing) {
   GoalPose far;
   far.position = Eigen::Vector3d(0.25, 0.2, 0.1);  // 0.335 m from the base's centre
   const double reach = 4 * 0.068;                   // Σ (l_{i-1} + l_i)
-  const std::vector<GoalVerdict> verdicts = loop.accept(far);
-  ASSERT_EQ(verdicts.size(), 1u);
-  EXPECT_EQ(verdicts[0].status, GoalStatus::Unreachable);
+  const GoalVerdict verdict = loop.accept(far);
+  EXPECT_EQ(verdict.status, GoalStatus::Unreachable);
   // No pose within the reach is closer than |r| − reach.
-  EXPECT_GE(verdicts[0].position_error, far.position.norm() - reach - 1e-12);
-  EXPECT_NE(verdicts[0].message.find("beyond the reach"), std::string::npos);
+  EXPECT_GE(verdict.position_error, far.position.norm() - reach - 1e-12);
+  EXPECT_NE(verdict.message.find("beyond the reach"), std::string::npos);
   EXPECT_FALSE(loop.executive().active());
   expectHolds(loop);
 }
 
-TEST(GoalExecutive, ANewGoalPreemptsTheOneInForce) {
+TEST(GoalExecutive, ProgressIsTheMeasuredChainsErrorsToTheGoalInForce) {
   const GoalExecutiveParameters parameters;
   Loop loop(kTableII, parameters);
+  EXPECT_FALSE(loop.stepOnce().progress);  // no goal: nothing to report
+  const GoalVerdict planned = loop.accept(targetA());
+  for (int k = 1; k <= 300; ++k) {
+    const ExecutiveStep step = loop.stepOnce();
+    ASSERT_TRUE(step.progress);
+    const PoseErrors truth = errorsOf(loop.chain(), loop.measured().joints, loop.goal());
+    EXPECT_EQ(step.progress->status, GoalStatus::Moving);
+    EXPECT_NEAR(step.progress->position_error, truth.position, 1e-12);
+    EXPECT_NEAR(step.progress->orientation_error, truth.orientation, 1e-9);
+    EXPECT_NEAR(step.progress->elapsed, 1e-9 * static_cast<double>((k - 1) * kStep), 1e-12);
+    EXPECT_EQ(step.progress->replans, 0);
+    EXPECT_EQ(step.progress->message, planned.message);
+  }
+  const std::vector<Event> events = loop.runUntilDone(60.0);
+  ASSERT_EQ(events.back().verdict.status, GoalStatus::Arrived);
+  EXPECT_FALSE(loop.stepOnce().progress);
+}
+
+TEST(GoalExecutive, ACancelStopsTheChainWhereItStandsAndANewGoalFollows) {
+  const GoalExecutiveParameters parameters;
+  Loop loop(kTableII, parameters);
+  EXPECT_THROW(loop.executive().cancel(loop.now()), std::logic_error);
   loop.accept(targetA());
   for (int k = 0; k < 100; ++k) loop.stepOnce();
+  EXPECT_THROW(loop.accept(targetA()), std::logic_error);
+  const GoalVerdict stopped = loop.executive().cancel(loop.now());
+  EXPECT_EQ(stopped.status, GoalStatus::Preempted);
+  // Measured: the chain the last step saw, 1 s after the goal (100 steps of 10 ms), still far.
+  const PoseErrors truth = errorsOf(loop.chain(), loop.measured().joints, loop.goal());
+  EXPECT_NEAR(stopped.position_error, truth.position, 1e-12);
+  EXPECT_NEAR(stopped.orientation_error, truth.orientation, 1e-9);
+  EXPECT_GT(stopped.position_error, parameters.position_tolerance);
+  EXPECT_NEAR(stopped.elapsed, 1.0, 1e-12);
+  EXPECT_FALSE(loop.executive().active());
+  expectHolds(loop);  // every wheel at zero from the next step on: the joints stay put
+
   GoalPose position_only;
   position_only.position = Eigen::Vector3d(0.05, 0.12, 0.15);
   position_only.mode = IkMode::PositionOnly;
-  const std::vector<GoalVerdict> verdicts = loop.accept(position_only);
-  ASSERT_EQ(verdicts.size(), 2u);
-  EXPECT_EQ(verdicts[0].status, GoalStatus::Preempted);
-  EXPECT_EQ(verdicts[0].position_error, kNotMeasured);
-  EXPECT_EQ(verdicts[0].orientation_error, kNotMeasured);
-  EXPECT_NEAR(verdicts[0].elapsed, 1.0, 1e-12);  // 100 steps of 10 ms
+  const GoalVerdict planned = loop.accept(position_only);
   const ExecutiveStep first = loop.stepOnce();
-  expectSolved(loop.chain(), verdicts[1], first.joint_targets, position_only, parameters);
+  expectSolved(loop.chain(), planned, first.joint_targets, position_only, parameters);
   const std::vector<Event> events = loop.runUntilDone(60.0);
   ASSERT_EQ(events.size(), 1u);
   ASSERT_EQ(events[0].verdict.status, GoalStatus::Arrived) << events[0].verdict.message;
@@ -332,23 +365,24 @@ TEST(GoalExecutive, ANewGoalPreemptsTheOneInForce) {
   EXPECT_LE(events[0].verdict.position_error, parameters.position_tolerance);
 }
 
-TEST(GoalExecutive, RefusesWhatItCannotPlanAndKeepsTheGoalInForce) {
+TEST(GoalExecutive, RefusesWhatItCannotPlanAndChangesNothing) {
   const FreebotChain chain(kTableII, TrolleyGeometry{});
   GoalExecutive executive(chain, GoalExecutiveParameters{});
   EXPECT_INVALID_ARGUMENT(executive.accept(targetA(), kStart), "no chain state");
   executive.step(kStart, chain.alignedState());
-  ASSERT_EQ(executive.accept(targetA(), kStart).back().status, GoalStatus::Moving);
   GoalPose bad = targetA();
   bad.position.x() = std::numeric_limits<double>::quiet_NaN();
   EXPECT_INVALID_ARGUMENT(executive.accept(bad, kStart + kStep), "target x");
   bad = targetA();
   bad.orientation.coeffs() *= 2.0;
   EXPECT_INVALID_ARGUMENT(executive.accept(bad, kStart + kStep), "target orientation");
-  EXPECT_TRUE(executive.active());
+  EXPECT_FALSE(executive.active());
+  ASSERT_EQ(executive.accept(targetA(), kStart + kStep).status, GoalStatus::Moving);
   ChainState short_state = chain.alignedState();
   short_state.headings.pop_back();
-  EXPECT_INVALID_ARGUMENT(executive.step(kStart + kStep, short_state), "heading count");
+  EXPECT_INVALID_ARGUMENT(executive.step(kStart + 2 * kStep, short_state), "heading count");
   EXPECT_EQ(executive.measurement()->headings.size(), chain.moduleCount());
+  EXPECT_TRUE(executive.active());
 }
 
 TEST(GoalExecutive, BadParametersAreNamed) {

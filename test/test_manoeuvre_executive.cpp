@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -52,7 +53,7 @@ std::vector<ManoeuvreExecutive::Output> runWith(ManoeuvreExecutive& executive,
   std::vector<ManoeuvreExecutive::Output> outputs;
   for (int i = 0; i < limit; ++i) {
     outputs.push_back(executive.step(from + i * kPeriod, i == 0 ? start : rest));
-    if (outputs.back().finished) break;
+    if (outputs.back().ended) break;
   }
   return outputs;
 }
@@ -147,12 +148,18 @@ TEST(ManoeuvreExecutive, OpenLoopCommandsArePlanSetPointsThenZero) {
     EXPECT_FALSE(outputs[i].set_point);
     EXPECT_EQ(outputs[i].state, ManoeuvreState::kSettling);
   }
-  EXPECT_EQ(outputs.back().finished, 0u);
+  ASSERT_TRUE(outputs.back().ended);
+  const ManoeuvreVerdict& verdict = *outputs.back().ended;
+  EXPECT_EQ(verdict.end, ManoeuvreEnd::kExecuted);
+  EXPECT_EQ(verdict.index, 0u);
+  EXPECT_EQ(verdict.corrections, 0);
+  EXPECT_NEAR(verdict.elapsed, 0.01 * static_cast<double>(outputs.size() - 1), 1e-12);
   EXPECT_EQ(outputs.back().state, ManoeuvreState::kIdle);
   // The measured sphere never moved: it ended where it started, |target| off the goal.
+  EXPECT_NEAR(verdict.miss.distance, 0.1 * std::hypot(0.5, 0.3), 1e-15);
+  EXPECT_NEAR(verdict.miss.heading, 0.4, 1e-15);
   ASSERT_TRUE(executive.lastMiss());
-  EXPECT_NEAR(executive.lastMiss()->distance, 0.1 * std::hypot(0.5, 0.3), 1e-15);
-  EXPECT_NEAR(executive.lastMiss()->heading, 0.4, 1e-15);
+  EXPECT_EQ(executive.lastMiss()->distance, verdict.miss.distance);
   EXPECT_FALSE(executive.step(start + 10000 * kPeriod, restAt(0, 0, 0)).set_point);
 }
 
@@ -172,6 +179,84 @@ TEST(ManoeuvreExecutive, TheGoalIsThePlanTakenFromTheMeasuredRest) {
   EXPECT_NEAR(executive.lastMiss()->heading, 0.0, 1e-15);
 }
 
+TEST(ManoeuvreExecutive, ProgressIsTheScheduleAndTheMissAsMeasured) {
+  const PlanRequest request = stackRequest();
+  ManoeuvreExecutive executive(stackParameters());
+  executive.offerPlans(request, planRotorMotion(request));
+  ASSERT_EQ(executive.execute(0), "");
+  // From the zero state the goal is the target (0.5 R, 0.3 R, 0.4 rad); measured at (0.2 R,
+  // 0.1 R, 0.1 rad) the sphere is 0.1 √(0.3² + 0.2²) m and 0.3 rad from it.
+  const std::vector<ManoeuvreExecutive::Output> outputs =
+      runWith(executive, restAt(0, 0, 0), restAt(0.2, 0.1, 0.1), 3 * kSecond);
+  const double duration = 4.0 * M_PI + 1.0;  // CurveTiming(2, 1 rad/s, 1 s ramps)
+  EXPECT_FALSE(outputs.back().progress);     // the end
+  for (std::size_t i = 0; i + 1 < outputs.size(); ++i) {
+    ASSERT_TRUE(outputs[i].progress) << "sample " << i;
+    const ManoeuvreProgress& progress = *outputs[i].progress;
+    const double t = 0.01 * static_cast<double>(i);
+    EXPECT_EQ(progress.state, outputs[i].state);
+    EXPECT_NEAR(progress.fraction, std::min(t / duration, 1.0), 1e-12) << "t = " << t;
+    EXPECT_NEAR(progress.elapsed, t, 1e-12);
+    EXPECT_EQ(progress.corrections, 0);
+    const double distance = i == 0 ? 0.1 * std::hypot(0.5, 0.3) : 0.1 * std::hypot(0.3, 0.2);
+    EXPECT_NEAR(progress.miss.distance, distance, 1e-15);
+    EXPECT_NEAR(progress.miss.heading, i == 0 ? 0.4 : 0.3, 1e-15);
+  }
+}
+
+TEST(ManoeuvreExecutive, ACancelBringsTheRotorsToRestWhereTheSphereStands) {
+  const PlanRequest request = stackRequest();
+  ManoeuvreExecutive executive(stackParameters());
+  EXPECT_THROW(executive.cancel(0, std::nullopt), std::logic_error);
+  executive.offerPlans(request, planRotorMotion(request));
+  ASSERT_EQ(executive.execute(0), "");
+  const Nanoseconds start = 2 * kSecond;
+  for (int i = 0; i < 300; ++i) {
+    const ManoeuvreExecutive::Output out = executive.step(start + i * kPeriod, restAt(0, 0, 0));
+    ASSERT_TRUE(out.set_point);
+  }
+  // 3 s into the cruise the rotors turn: the plan's set-point there is far from zero.
+  const Nanoseconds now = start + 300 * kPeriod;
+  const ManoeuvreVerdict canceled = executive.cancel(now, restAt(0.2, 0.1, 0.1));
+  EXPECT_EQ(canceled.end, ManoeuvreEnd::kCanceled);
+  EXPECT_EQ(canceled.index, 0u);
+  EXPECT_NEAR(canceled.elapsed, 3.0, 1e-12);
+  EXPECT_NEAR(canceled.miss.distance, 0.1 * std::hypot(0.3, 0.2), 1e-15);
+  EXPECT_NEAR(canceled.miss.heading, 0.3, 1e-15);
+  EXPECT_NE(canceled.message.find("canceled"), std::string::npos) << canceled.message;
+  EXPECT_TRUE(executive.busy());  // the rotors are still to be stopped
+  // One zero set-point at the next step, then nothing: the execution is over.
+  const ManoeuvreExecutive::Output stop = executive.step(now, restAt(0.2, 0.1, 0.1));
+  ASSERT_TRUE(stop.set_point);
+  EXPECT_EQ(stop.set_point->phi1, 0.0);
+  EXPECT_EQ(stop.set_point->phi2, 0.0);
+  EXPECT_EQ(stop.state, ManoeuvreState::kIdle);
+  EXPECT_FALSE(stop.ended);
+  EXPECT_FALSE(stop.progress);
+  EXPECT_FALSE(executive.busy());
+  for (int i = 1; i < 200; ++i) {
+    const ManoeuvreExecutive::Output out = executive.step(now + i * kPeriod, restAt(0.2, 0.1, 0.1));
+    EXPECT_FALSE(out.set_point);
+    EXPECT_FALSE(out.ended);
+  }
+  // A request canceled before its first step: nothing traced, nothing left to do but the stop.
+  ASSERT_EQ(executive.execute(0), "");
+  const ManoeuvreVerdict unstarted = executive.cancel(now + 200 * kPeriod, restAt(0.2, 0.1, 0.1));
+  EXPECT_EQ(unstarted.end, ManoeuvreEnd::kCanceled);
+  EXPECT_EQ(unstarted.elapsed, 0.0);
+  // Its goal is the plan taken from the rest it would have started from.
+  const RestPose goal = planEnd({0.2, 0.1, 0.1}, {0.5, 0.3, 0.4});
+  EXPECT_NEAR(unstarted.miss.distance, 0.1 * std::hypot(goal.u_a - 0.2, goal.v_a - 0.1), 1e-15);
+  EXPECT_NE(unstarted.message.find("before it started"), std::string::npos) << unstarted.message;
+  // A new execution may be asked at once; it starts from rest at the next step.
+  ASSERT_EQ(executive.execute(0), "");
+  const ManoeuvreExecutive::Output restart = executive.step(now + 201 * kPeriod, restAt(0.2, 0.1, 0.1));
+  EXPECT_EQ(restart.state, ManoeuvreState::kExecuting);
+  ASSERT_TRUE(restart.set_point);
+  EXPECT_EQ(restart.set_point->phi1, 0.0);  // the sin² ramp starts at rest
+  EXPECT_EQ(restart.set_point->phi2, 0.0);
+}
+
 TEST(ManoeuvreExecutive, NeverTwoArcsInARow) {
   // The contact stays off the pole and the sphere off the goal whatever is done: after the plan
   // an arc, then a figure eight although the contact is still off the pole, then an arc again.
@@ -189,7 +274,9 @@ TEST(ManoeuvreExecutive, NeverTwoArcsInARow) {
                                          ManoeuvreState::kCorrecting,
                                          ManoeuvreState::kReturningToPole}));
   EXPECT_EQ(executive.correctionsMade(), 3u);
-  EXPECT_EQ(outputs.back().finished, 0u);
+  ASSERT_TRUE(outputs.back().ended);
+  EXPECT_EQ(outputs.back().ended->index, 0u);
+  EXPECT_EQ(outputs.back().ended->corrections, 3);
   // Every manoeuvre starts from rest and ends in a zero set-point before it settles.
   for (std::size_t i = 1; i < outputs.size(); ++i) {
     if (outputs[i].state == ManoeuvreState::kSettling &&

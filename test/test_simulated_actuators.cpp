@@ -142,6 +142,31 @@ TEST(SimulatedActuators, WatchdogBringsActuatorsToRestAfterTimeout) {
   }
 }
 
+TEST(SimulatedActuators, ATimeoutAfterACommandToRestStopsNothing) {
+  // The last command asked every actuator for rest: the watchdog fires, but changes nothing.
+  auto resting = makeActuators(10.0, 20.0, 0.5);
+  ASSERT_EQ(resting.command({"theta", "phi", "psi"}, {2.0, -1.0, 0.5}, 0.0), "");
+  ASSERT_EQ(resting.command({"theta", "phi", "psi"}, {0.0, 0.0, 0.0}, 1.0), "");
+  resting.update(1.4);
+  EXPECT_FALSE(resting.timedOut());
+  EXPECT_FALSE(resting.timedOutAtRest());
+  resting.update(2.0);
+  EXPECT_TRUE(resting.timedOut());
+  EXPECT_TRUE(resting.timedOutAtRest());
+  // One actuator still asked to move (the others unmentioned keep their last set-point): the
+  // watchdog stopped it.
+  auto moving = makeActuators(10.0, 20.0, 0.5);
+  ASSERT_EQ(moving.command({"theta", "phi", "psi"}, {0.0, 0.0, 0.0}, 0.0), "");
+  ASSERT_EQ(moving.command({"phi"}, {1.0}, 0.1), "");
+  moving.update(2.0);
+  EXPECT_TRUE(moving.timedOut());
+  EXPECT_FALSE(moving.timedOutAtRest());
+  // A command clears both.
+  ASSERT_EQ(resting.command({"theta"}, {0.0}, 2.0), "");
+  EXPECT_FALSE(resting.timedOut());
+  EXPECT_FALSE(resting.timedOutAtRest());
+}
+
 TEST(SimulatedActuators, WatchdogRampDownFollowsTheClosedForm) {
   auto actuators = makeActuators(10.0, 20.0, 0.5);
   ASSERT_EQ(actuators.command({"phi"}, {8.0}, 0.0), "");

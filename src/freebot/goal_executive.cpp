@@ -39,26 +39,26 @@ GoalExecutive::GoalExecutive(FreebotChain chain, const GoalExecutiveParameters& 
                                 std::to_string(parameters.max_replans));
 }
 
-std::vector<GoalVerdict> GoalExecutive::accept(const GoalPose& pose, Nanoseconds t) {
+GoalVerdict GoalExecutive::accept(const GoalPose& pose, Nanoseconds t) {
+  if (goal_) throw std::logic_error("a goal is in force: cancel it before accepting another");
   if (!measurement_) throw std::invalid_argument("no chain state measured yet to plan from");
-  ActiveGoal goal{pose, t, {}, 0};
-  // Planned before the goal in force is touched: solveIk's rejection of a bad goal changes nothing.
+  ActiveGoal goal{pose, t, {}, 0, {}};
+  // Planned before anything is kept: solveIk's rejection of a bad goal changes nothing.
   const GoalVerdict planned = plan(goal, t, "");
-  std::vector<GoalVerdict> verdicts;
-  if (goal_) {
-    verdicts.push_back({GoalStatus::Preempted, kNotMeasured, kNotMeasured,
-                        secondsSince(goal_->accepted, t), "replaced by a newer goal"});
-  }
-  goal_.reset();
   if (planned.status == GoalStatus::Moving) goal_ = std::move(goal);
-  verdicts.push_back(planned);
-  return verdicts;
+  return planned;
+}
+
+GoalVerdict GoalExecutive::cancel(Nanoseconds t) {
+  if (!goal_) throw std::logic_error("no goal in force to cancel");
+  return finish(GoalStatus::Preempted, "stopped", t);
 }
 
 ExecutiveStep GoalExecutive::step(Nanoseconds t, const ChainState& measurement) {
   chain_.requireValid(measurement);
   measurement_ = measurement;
-  ExecutiveStep out{{}, std::vector<WheelSpeeds>(chain_.moduleCount()), {}};
+  ExecutiveStep out;
+  out.wheels.resize(chain_.moduleCount());
   if (!goal_) return out;
   drives_ = chain_.drive(measurement, goal_->targets, parameters_.gains, parameters_.limits);
   const bool arrived = std::all_of(drives_.begin(), drives_.end(),
@@ -89,7 +89,10 @@ ExecutiveStep GoalExecutive::step(Nanoseconds t, const ChainState& measurement) 
   } else {
     for (std::size_t i = 0; i < drives_.size(); ++i) out.wheels[i] = drives_[i].wheels;
   }
-  if (goal_) out.joint_targets = goal_->targets;
+  if (goal_) {
+    out.joint_targets = goal_->targets;
+    out.progress = progress(t);
+  }
   return out;
 }
 
@@ -103,6 +106,7 @@ GoalVerdict GoalExecutive::plan(ActiveGoal& goal, Nanoseconds t, const std::stri
   if (result.success) {
     goal.targets = result.joints;
     message << "IK solved in " << result.iterations << " iterations: moving";
+    goal.plan = message.str();
   } else {
     const double reach = chain_.manipulator().reach();
     message << "goal unreachable: the closest pose found is " << result.position_error * 1e3
@@ -114,7 +118,7 @@ GoalVerdict GoalExecutive::plan(ActiveGoal& goal, Nanoseconds t, const std::stri
     message << "); the chain holds its pose";
   }
   return {result.success ? GoalStatus::Moving : GoalStatus::Unreachable, result.position_error,
-          result.orientation_error, secondsSince(goal.accepted, t), message.str()};
+          result.orientation_error, secondsSince(goal.accepted, t), goal.replans, message.str()};
 }
 
 std::pair<double, double> GoalExecutive::errors() const {
@@ -130,8 +134,15 @@ GoalVerdict GoalExecutive::finish(GoalStatus status, const std::string& why, Nan
   std::ostringstream message;
   message << why << " after " << elapsed << " s (" << position_error << " m, "
           << orientation_error << " rad from the goal)";
+  const int replans = goal_->replans;
   goal_.reset();
-  return {status, position_error, orientation_error, elapsed, message.str()};
+  return {status, position_error, orientation_error, elapsed, replans, message.str()};
+}
+
+GoalVerdict GoalExecutive::progress(Nanoseconds t) const {
+  const auto [position_error, orientation_error] = errors();
+  return {GoalStatus::Moving, position_error, orientation_error, secondsSince(goal_->accepted, t),
+          goal_->replans, goal_->plan};
 }
 
 }  // namespace spherical_robots::freebot

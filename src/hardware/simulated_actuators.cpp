@@ -200,6 +200,8 @@ void SimulatedActuators::update(double t) {
       }
     }
     if (armed && deadline <= now_) {
+      timed_out_at_rest_ = std::all_of(setpoints_.begin(), setpoints_.end(),
+                                       [](double setpoint) { return setpoint == 0.0; });
       zeroSetpoints();
       timed_out_ = true;
     }

@@ -76,33 +76,55 @@ freebot::ChainState chainStateFromMsg(const spherical_robots::FreebotState& msg)
 }
 
 
-spherical_robots::FreebotGoalResult toGoalResultMsg(const freebot::GoalVerdict& verdict,
-                                                    const geometry_msgs::Pose& goal,
-                                                    const std::string& frame,
-                                                    const ros::Time& stamp) {
-  using Result = spherical_robots::FreebotGoalResult;
-  using freebot::GoalStatus;
-  static_assert(static_cast<int>(GoalStatus::Moving) == Result::MOVING &&
-                    static_cast<int>(GoalStatus::Arrived) == Result::ARRIVED &&
-                    static_cast<int>(GoalStatus::Unreachable) == Result::UNREACHABLE &&
-                    static_cast<int>(GoalStatus::Rejected) == Result::REJECTED &&
-                    static_cast<int>(GoalStatus::Preempted) == Result::PREEMPTED &&
-                    static_cast<int>(GoalStatus::Aborted) == Result::ABORTED,
-                "freebot::GoalStatus must list msg/FreebotGoalResult.msg's statuses in order");
-  Result result;
-  result.header.stamp = stamp;
-  result.header.frame_id = frame;
-  result.status = static_cast<std::uint8_t>(verdict.status);
-  const Eigen::Vector4d orientation(goal.orientation.x, goal.orientation.y, goal.orientation.z,
-                                    goal.orientation.w);
-  if (Eigen::Vector3d(goal.position.x, goal.position.y, goal.position.z).allFinite() &&
-      orientation.allFinite())
-    result.goal = goal;
-  result.position_error = verdict.position_error;
-  result.orientation_error = verdict.orientation_error;
-  result.elapsed = verdict.elapsed;
-  result.message = verdict.message;
-  return result;
+freebot::GoalPose goalPoseFromMsg(const geometry_msgs::PoseStamped& target, const std::string& frame,
+                                  double max_distance, double unit_tolerance) {
+  const std::string& frame_id = target.header.frame_id;
+  if (!frame_id.empty() && frame_id != frame)
+    throw std::invalid_argument("target frame_id '" + frame_id + "': expected '" + frame +
+                                "' (or empty)");
+  const geometry_msgs::Quaternion& q = target.pose.orientation;
+  freebot::GoalPose goal;
+  goal.position = boundedPoint(target.pose.position, "target.pose.position", max_distance);
+  if (q.x == 0.0 && q.y == 0.0 && q.z == 0.0 && q.w == 0.0)
+    goal.mode = freebot::IkMode::PositionOnly;
+  else
+    goal.orientation = fromQuaternion(q, "target.pose.orientation", unit_tolerance);
+  return goal;
+}
+
+namespace {
+
+using Result = spherical_robots::MoveFreebotResult;
+using freebot::GoalStatus;
+static_assert(static_cast<int>(GoalStatus::Moving) == spherical_robots::MoveFreebotFeedback::MOVING &&
+                  static_cast<int>(GoalStatus::Arrived) == Result::ARRIVED &&
+                  static_cast<int>(GoalStatus::Unreachable) == Result::UNREACHABLE &&
+                  static_cast<int>(GoalStatus::Rejected) == Result::REJECTED &&
+                  static_cast<int>(GoalStatus::Preempted) == Result::PREEMPTED &&
+                  static_cast<int>(GoalStatus::Aborted) == Result::ABORTED,
+              "freebot::GoalStatus must list action/MoveFreebot.action's codes in order");
+
+/// The fields a result and a feedback share, from a verdict.
+template <typename Message>
+Message fromVerdict(const freebot::GoalVerdict& verdict) {
+  Message message;
+  message.status = static_cast<std::uint8_t>(verdict.status);
+  message.position_error = verdict.position_error;
+  message.orientation_error = verdict.orientation_error;
+  message.elapsed = verdict.elapsed;
+  message.replans = static_cast<std::uint32_t>(verdict.replans);
+  message.message = verdict.message;
+  return message;
+}
+
+}  // namespace
+
+spherical_robots::MoveFreebotResult toMoveFreebotResult(const freebot::GoalVerdict& verdict) {
+  return fromVerdict<spherical_robots::MoveFreebotResult>(verdict);
+}
+
+spherical_robots::MoveFreebotFeedback toMoveFreebotFeedback(const freebot::GoalVerdict& progress) {
+  return fromVerdict<spherical_robots::MoveFreebotFeedback>(progress);
 }
 
 std::string freebotLinkFrame(const std::string& prefix, std::size_t i) {

@@ -19,11 +19,6 @@ using freebot::GoalStatus;
 // Goals come from rviz (float32 quaternions) and from people typing 4-digit quaternions.
 constexpr double kGoalUnitTolerance = 1e-3;
 
-/// An all-zero orientation asks for the position only.
-bool positionOnly(const geometry_msgs::Quaternion& q) {
-  return q.x == 0.0 && q.y == 0.0 && q.z == 0.0 && q.w == 0.0;
-}
-
 }  // namespace
 
 FreebotIkParameters loadFreebotIkParameters(const config::ParameterSource& stack,
@@ -39,22 +34,23 @@ FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : parameters_(loadFreebotIkParameters(RosParameterSource(nh), RosParameterSource(pnh))),
       executive_(parameters_.chain, parameters_.executive),
       state_input_(nh.resolveName("freebot_state"), parameters_.input_timeout),
-      goal_input_(nh.resolveName("goal"), 1e9),
+      goal_input_(nh.resolveName("move_freebot/goal"), 1e9),
       work_([this](const spherical_robots::FreebotState& msg) { drive(msg); }, step_publications_),
+      goals_(nh, "move_freebot",
+             [this](const spherical_robots::MoveFreebotGoal& goal) { return check(goal); }),
       updater_(nh, pnh, pnh.getNamespace()) {
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
-  result_pub_ = nh.advertise<spherical_robots::FreebotGoalResult>("goal_result", 10, true);
   target_pub_ = nh.advertise<geometry_msgs::PoseStamped>("ik_target", 1, true);
   state_sub_ = nh.subscribe("freebot_state", kLoopQueueSize, &FreebotIkRos::onState, this);
   work_.join(nh, pnh, {state_sub_});
-  goal_sub_ = nh.subscribe("goal", 10, &FreebotIkRos::onGoal, this);
   solve_server_ = nh.advertiseService("solve_ik", &FreebotIkRos::onSolve, this);
   updater_.setHardwareID("FreeBOT");
   updater_.add("freebot ik", this, &FreebotIkRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
   ROS_INFO_STREAM("FreeBOT IK: " << executive_.chain().moduleCount() << " modules, reach "
-                                 << executive_.chain().manipulator().reach() << " m; goals on "
-                                 << goal_input_.topic() << ", state on " << state_input_.topic());
+                                 << executive_.chain().manipulator().reach() << " m; action "
+                                 << nh.resolveName("move_freebot") << ", state on "
+                                 << state_input_.topic());
 }
 
 void FreebotIkRos::onState(const spherical_robots::FreebotState& msg) {
@@ -69,62 +65,85 @@ void FreebotIkRos::drive(const spherical_robots::FreebotState& msg) {
     const std::string stamp_problem =
         stampProblem(now, workingTime(work_.participant()), parameters_.max_stamp_skew);
     if (!stamp_problem.empty()) throw std::invalid_argument("freebot_state " + stamp_problem);
-    step = executive_.step(nanosecondsOf(now), conversions::chainStateFromMsg(msg));
+    const freebot::ChainState measurement = conversions::chainStateFromMsg(msg);
+    // Before the step: a cancel stops the wheels at this step, a new goal drives from it.
+    takeGoals(now);
+    step = executive_.step(nanosecondsOf(now), measurement);
   } catch (const std::invalid_argument& e) {
     state_input_.reject(e.what());  // nothing commanded: the hardware's watchdog stops the wheels
     return;
   }
   state_input_.accept(workingTime(work_.participant()));
-  for (const freebot::GoalVerdict& verdict : step.verdicts) publishResult(verdict, goal_pose_, now);
+  for (const freebot::GoalVerdict& verdict : step.verdicts) follow(verdict);
+  if (step.progress) goals_.publishFeedback(conversions::toMoveFreebotFeedback(*step.progress));
   command_pub_.publish(conversions::jointStateFromWheelSpeeds(step.wheels, now));
 }
 
-void FreebotIkRos::onGoal(const geometry_msgs::PoseStamped& msg) {
-  const ros::Time now = workingTime(work_.participant());
-  std::vector<freebot::GoalVerdict> verdicts;
-  try {
-    if (!msg.header.frame_id.empty() && msg.header.frame_id != kWorldFrame)
-      throw std::invalid_argument("frame_id '" + msg.header.frame_id + "': expected '" +
-                                  kWorldFrame + "' (or empty)");
-    freebot::GoalPose goal;
-    goal.position = conversions::boundedPoint(msg.pose.position, "pose.position",
-                                              parameters_.max_goal_distance);
-    if (positionOnly(msg.pose.orientation))
-      goal.mode = freebot::IkMode::PositionOnly;
-    else
-      goal.orientation = conversions::fromQuaternion(msg.pose.orientation, "pose.orientation",
-                                                     kGoalUnitTolerance);
-    verdicts = executive_.accept(goal, nanosecondsOf(now));
-  } catch (const std::invalid_argument& e) {
-    goal_input_.reject(e.what());
-    publishResult({GoalStatus::Rejected, freebot::kNotMeasured, freebot::kNotMeasured, 0.0,
-                   std::string("goal rejected: ") + e.what()},
-                  msg.pose, now);
-    return;
-  }
-  goal_input_.accept(now);
-  ++goals_;
-  target_pub_.publish(msg);
-  for (const freebot::GoalVerdict& verdict : verdicts)
-    publishResult(verdict, verdict.status == GoalStatus::Preempted ? goal_pose_ : msg.pose, now);
-  goal_pose_ = msg.pose;
+freebot::GoalPose FreebotIkRos::goalPose(const geometry_msgs::PoseStamped& target) const {
+  return conversions::goalPoseFromMsg(target, kWorldFrame, parameters_.max_goal_distance,
+                                      kGoalUnitTolerance);
 }
 
-void FreebotIkRos::publishResult(const freebot::GoalVerdict& verdict,
-                                 const geometry_msgs::Pose& pose, const ros::Time& now) {
-  if (verdict.status == GoalStatus::Unreachable) ++unreachable_;
-  const bool failed = verdict.status == GoalStatus::Unreachable ||
-                      verdict.status == GoalStatus::Aborted;
+std::optional<spherical_robots::MoveFreebotResult> FreebotIkRos::check(
+    const spherical_robots::MoveFreebotGoal& goal) {
+  try {
+    goalPose(goal.target);
+    return std::nullopt;
+  } catch (const std::invalid_argument& e) {
+    return rejection(e.what());
+  }
+}
+
+spherical_robots::MoveFreebotResult FreebotIkRos::rejection(const std::string& why) {
+  goal_input_.reject(why);  // logged, counted on /diagnostics
+  freebot::GoalVerdict rejected;
+  rejected.status = GoalStatus::Rejected;
+  rejected.message = "goal rejected: " + why;
+  last_verdict_ = rejected;
+  updater_.force_update();
+  return conversions::toMoveFreebotResult(rejected);
+}
+
+void FreebotIkRos::takeGoals(const ros::Time& t) {
+  if (goals_.preemptRequested()) follow(executive_.cancel(nanosecondsOf(t)));
+  const spherical_robots::MoveFreebotGoal* goal = goals_.pending();
+  if (!goal || !executive_.measurement()) return;
+  freebot::GoalVerdict verdict;
+  try {
+    verdict = executive_.accept(goalPose(goal->target), nanosecondsOf(t));
+  } catch (const std::invalid_argument& e) {  // checked when it came: not expected
+    goals_.reject(rejection(e.what()));
+    return;
+  }
+  goal_input_.accept(t);
+  ++goals_taken_;
+  geometry_msgs::PoseStamped target = goal->target;
+  target.header.stamp = t;  // when it took effect
+  target_pub_.publish(target);
+  target_ = target.pose.position;
+  goals_.take();
+  follow(verdict);
+}
+
+void FreebotIkRos::follow(const freebot::GoalVerdict& verdict) {
   std::ostringstream text;
-  text << "goal (" << pose.position.x << ", " << pose.position.y << ", " << pose.position.z
+  text << "goal (" << target_.x << ", " << target_.y << ", " << target_.z
        << ") m: " << verdict.message;
-  if (failed)
+  if (verdict.status == GoalStatus::Unreachable || verdict.status == GoalStatus::Aborted)
     ROS_WARN_STREAM(text.str());
-  else if (verdict.status != GoalStatus::Rejected)  // logged by its input monitor
+  else
     ROS_INFO_STREAM(text.str());
-  result_pub_.publish(conversions::toGoalResultMsg(verdict, pose, kWorldFrame, now));
+  if (verdict.status == GoalStatus::Unreachable) ++unreachable_;
   last_verdict_ = verdict;
   updater_.force_update();
+  if (verdict.status == GoalStatus::Moving) return;  // planned, or planned again
+  const spherical_robots::MoveFreebotResult result = conversions::toMoveFreebotResult(verdict);
+  if (verdict.status == GoalStatus::Arrived)
+    goals_.succeed(result);
+  else if (verdict.status == GoalStatus::Preempted)
+    goals_.preempt(result);
+  else
+    goals_.abort(result);  // Unreachable, Aborted
 }
 
 bool FreebotIkRos::onSolve(spherical_robots::SolveFreebotIk::Request& request,
@@ -181,7 +200,7 @@ void FreebotIkRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status)
   else
     status.summary(diagnostic_msgs::DiagnosticStatus::OK,
                    last_verdict_ ? last : "waiting for a goal");
-  status.add("goals", goals_);
+  status.add("goals", goals_taken_);
   status.add("unreachable goals", unreachable_);
   status.add("rejected goals", goal_input_.rejected());
   status.add("last verdict", last);

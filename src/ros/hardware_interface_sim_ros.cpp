@@ -150,8 +150,12 @@ void HardwareInterfaceSimRos::update(const ros::Time& now) {
   followClock(now);
   actuators_.update(now.toSec());
   if (actuators_.timedOut() && !reported_timeout_) {
-    ROS_WARN("hardware_interface_sim: no command for %g s: actuators brought to rest",
-             actuators_.commandTimeout());
+    if (actuators_.timedOutAtRest())
+      ROS_INFO("hardware_interface_sim: no command for %g s after one to rest: idle",
+               actuators_.commandTimeout());
+    else
+      ROS_WARN("hardware_interface_sim: no command for %g s: actuators brought to rest",
+               actuators_.commandTimeout());
     reported_timeout_ = true;
   }
   publishState(now);
@@ -223,6 +227,8 @@ void HardwareInterfaceSimRos::diagnose(diagnostic_updater::DiagnosticStatusWrapp
   using diagnostic_msgs::DiagnosticStatus;
   if (actuators_.eStopped())
     status.summary(DiagnosticStatus::ERROR, "e-stop engaged");
+  else if (actuators_.timedOutAtRest())
+    status.summary(DiagnosticStatus::OK, "idle: at rest as last commanded");
   else if (actuators_.timedOut())
     status.summary(DiagnosticStatus::WARN, "command timeout: actuators brought to rest");
   else if (!actuators_.hasCommand())

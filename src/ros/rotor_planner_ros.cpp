@@ -10,6 +10,7 @@
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/diagnostics_timer.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
+#include "spherical_robots/ros/rotor_conversions.hpp"
 #include "spherical_robots/rotor/contact_kinematics.hpp"
 #include "spherical_robots/rotor/geometric_phase.hpp"
 
@@ -31,14 +32,16 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       executive_(params_.executive),
       odom_input_(nh.resolveName("odom"), params_.odom_timeout),
       updater_(nh, pnh, pnh.getNamespace()),
-      driven_(nh, "driven_path", params_.frame_id, params_.path_period, kMaxDrivenPoses, true) {
+      driven_(nh, "driven_path", params_.frame_id, params_.path_period, kMaxDrivenPoses, true),
+      // Every goal waits for a step, where it is planned; on a timer the step must run.
+      goals_(pnh, "execute_manoeuvre", nullptr, [this] {
+        if (!lockstep_) command_timer_.start();
+      }) {
   const double period = params_.executive.command_period;
   path_pub_ = nh.advertise<nav_msgs::Path>("planned_path", 1, true);
   marker_pub_ = nh.advertise<visualization_msgs::Marker>("contact_curve", 1, true);
   service_ = pnh.advertiseService("plan", &RotorPlannerRos::onPlan, this);
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
-  done_pub_ = nh.advertise<std_msgs::UInt32>("execution_done", 1, true);
-  execute_sub_ = pnh.subscribe("execute", 1, &RotorPlannerRos::onExecute, this);
   odom_sub_ = nh.subscribe("odom", kLoopQueueSize, &RotorPlannerRos::onOdometry, this);
   if (isLockstepParticipant(nh, pnh)) {
     // Asked every command period, also between manoeuvres (it has nothing to send then).
@@ -62,23 +65,26 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.add("rotor planner", this, &RotorPlannerRos::diagnose);
   ROS_INFO_STREAM("rotor_planner: R = " << radius_ << " m, circle radii up to "
                                         << params_.max_radius << " m; service "
-                                        << service_.getService());
+                                        << service_.getService() << ", action "
+                                        << pnh.resolveName("execute_manoeuvre"));
 }
 
 void RotorPlannerRos::planStartUpManoeuvre(const ros::NodeHandle& pnh) {
   if (!params_.manoeuvre) return;
   const RotorPlannerParameters::StartUpManoeuvre& m = *params_.manoeuvre;
   spherical_robots::PlanRotorMotion::Request request;
-  spherical_robots::PlanRotorMotion::Response response;
   request.k = m.k;
   request.steps = m.steps;
   request.u_a = m.u;
   request.v_a = m.v;
   request.psi = m.psi;
-  onPlan(request, response);
-  if (!response.success)
+  const rotor::PlanRequest plan_request =
+      conversions::toPlanRequest(request, radius_, params_.max_radius);
+  const rotor::PlanResult result = plan(plan_request);
+  if (result.solutions.empty())
     throw std::invalid_argument("no plan for the start-up manoeuvre (" +
-                                pnh.resolveName("manoeuvre") + "): " + response.reason);
+                                pnh.resolveName("manoeuvre") + "): " + result.reason);
+  executive_.offerPlans(plan_request, result);
   const std::string refused = executive_.execute(static_cast<std::uint32_t>(m.index));
   if (!refused.empty())
     throw std::invalid_argument("parameter " + pnh.resolveName("manoeuvre/index") + " = " +
@@ -88,20 +94,8 @@ void RotorPlannerRos::planStartUpManoeuvre(const ros::NodeHandle& pnh) {
 
 bool RotorPlannerRos::onPlan(spherical_robots::PlanRotorMotion::Request& request,
                              spherical_robots::PlanRotorMotion::Response& response) {
-  rotor::PlanRequest plan;
-  plan.k = request.k;
-  plan.steps = request.steps;
-  plan.u_a = request.u_a / radius_;
-  plan.v_a = request.v_a / radius_;
-  plan.psi = request.psi;
-  plan.max_radius = (request.max_radius > 0.0 ? request.max_radius : params_.max_radius) / radius_;
-  plan.heading_turns = request.heading_turns;
-  rotor::PlanResult result;
-  try {
-    result = rotor::planRotorMotion(plan);
-  } catch (const std::invalid_argument& error) {
-    result.reason = std::string("invalid request: ") + error.what();
-  }
+  const rotor::PlanResult result =
+      plan(conversions::toPlanRequest(request, radius_, params_.max_radius));
   response.success = !result.solutions.empty();
   response.reason = result.reason;
   for (const rotor::RotorPlan& solution : result.solutions) {
@@ -112,23 +106,32 @@ bool RotorPlannerRos::onPlan(spherical_robots::PlanRotorMotion::Request& request
     response.length.push_back(solution.length * radius_);
     response.final_error.push_back(solution.final_error);
   }
-  if (!response.success) {
-    refuse(result.reason);
-    return true;
+  return true;
+}
+
+rotor::PlanResult RotorPlannerRos::plan(const rotor::PlanRequest& request) {
+  rotor::PlanResult result;
+  try {
+    result = rotor::planRotorMotion(request);
+  } catch (const std::invalid_argument& error) {
+    result.reason = std::string("invalid request: ") + error.what();
   }
-  executive_.offerPlans(plan, result);
+  if (result.solutions.empty()) {
+    refuse(result.reason);
+    return result;
+  }
   const rotor::RotorPlan& best = result.solutions.front();
   ROS_INFO_STREAM("rotor_planner: " << result.solutions.size() << " plan(s); shortest a = "
                                     << best.a * radius_ << " m, b = " << best.b * radius_
                                     << " m, gamma = " << best.gamma << " rad, final error "
                                     << best.final_error);
-  if (params_.robot_inertia_ratio && std::abs(*params_.robot_inertia_ratio - plan.k) > 1e-9) {
-    ROS_WARN_STREAM("rotor_planner: the plan is for k = " << plan.k << " but the robot's "
+  if (params_.robot_inertia_ratio && std::abs(*params_.robot_inertia_ratio - request.k) > 1e-9) {
+    ROS_WARN_STREAM("rotor_planner: the plan is for k = " << request.k << " but the robot's "
                     << nh_.resolveName("inertia_ratio") << " is " << *params_.robot_inertia_ratio
                     << ": it will not reach the target");
   }
-  publishPlan(plan.k, plan.steps, best.a, best.b, best.gamma);
-  return true;
+  publishPlan(request.k, request.steps, best.a, best.b, best.gamma);
+  return result;
 }
 
 void RotorPlannerRos::publishPlan(double k, int steps, double a, double b, double gamma) {
@@ -163,12 +166,56 @@ void RotorPlannerRos::publishPlan(double k, int steps, double a, double b, doubl
   marker_pub_.publish(marker);
 }
 
-void RotorPlannerRos::onExecute(const std_msgs::UInt32& msg) {
-  const std::string refused = executive_.execute(msg.data);
-  if (!refused.empty()) return refuse(refused);
+void RotorPlannerRos::takeGoals(const ros::Time& now) {
+  const spherical_robots::ExecuteRotorManoeuvreGoal* goal = goals_.pending();
+  rotor::PlanRequest request;
+  rotor::PlanResult result;
+  if (goal) {
+    request = conversions::toPlanRequest(*goal, radius_, params_.max_radius);
+    result = plan(request);
+    std::string problem = result.reason;
+    if (!result.solutions.empty() && goal->plan_index >= result.solutions.size()) {
+      problem = "plan_index " + std::to_string(goal->plan_index) + " refused: the request has " +
+                std::to_string(result.solutions.size()) + " plan(s)";
+      refuse(problem);
+    }
+    if (!problem.empty()) {
+      goals_.reject(conversions::rejectedManoeuvreResult(problem));
+      goal = nullptr;
+    }
+  }
+  const Nanoseconds t = nanosecondsOf(now);
+  if (goals_.preemptRequested()) endGoal(executive_.cancel(t, rest_));
+  if (!goal) return;
+  if (executive_.executing())  // the start-up manoeuvre, which no goal stands for
+    ROS_INFO_STREAM("rotor_planner: " << executive_.cancel(t, rest_).message << " for a goal");
+  executive_.offerPlans(request, result);
+  const std::string refused = executive_.execute(goal->plan_index);
+  if (!refused.empty()) {  // the index was checked above: not expected
+    refuse(refused);
+    goals_.reject(conversions::rejectedManoeuvreResult(refused));
+    return;
+  }
+  goals_.take();
   driven_.clear();
   last_problem_.clear();
-  if (!lockstep_) command_timer_.start();  // a correction continues in the running timer's phase
+}
+
+void RotorPlannerRos::endGoal(const rotor::ManoeuvreVerdict& verdict) {
+  const spherical_robots::ExecuteRotorManoeuvreResult result =
+      conversions::toManoeuvreResult(verdict);
+  switch (verdict.end) {
+    case rotor::ManoeuvreEnd::kExecuted:
+      goals_.succeed(result);
+      break;
+    case rotor::ManoeuvreEnd::kRefused:
+      goals_.abort(result);
+      break;
+    case rotor::ManoeuvreEnd::kCanceled:
+      ROS_INFO_STREAM("rotor_planner: " << verdict.message);
+      goals_.preempt(result);
+      break;
+  }
 }
 
 void RotorPlannerRos::refuse(const std::string& problem) {
@@ -203,6 +250,7 @@ void RotorPlannerRos::onCommandTimer(const ros::TimerEvent& event) {
 
 void RotorPlannerRos::command(const ros::Time& now) {
   if (rest_) rest_->fresh = odom_input_.fresh(now);
+  takeGoals(now);
   const rotor::ManoeuvreExecutive::Output out = executive_.step(nanosecondsOf(now), rest_);
   if (out.clock_jump != 0.0 && timer_guard_) timer_guard_->reset();
   for (const rotor::ManoeuvreExecutive::Report& report : out.reports) {
@@ -218,11 +266,12 @@ void RotorPlannerRos::command(const ros::Time& now) {
     command_pub_.publish(
         conversions::velocityJointState(kRotors, {out.set_point->phi1, out.set_point->phi2}, now));
   }
-  if (out.finished) {
+  if (out.ended) {
     driven_.publish();
-    std_msgs::UInt32 done;
-    done.data = *out.finished;
-    done_pub_.publish(done);
+    if (goals_.active()) endGoal(*out.ended);  // else the start-up manoeuvre's end
+    updater_.force_update();
+  } else if (out.progress && goals_.active()) {
+    goals_.publishFeedback(conversions::toManoeuvreFeedback(*out.progress));
   }
   if (!executive_.busy()) command_timer_.stop();
 }

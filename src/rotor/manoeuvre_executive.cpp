@@ -50,6 +50,15 @@ const char* toString(ManoeuvreState state) {
   return "unknown";
 }
 
+const char* toString(ManoeuvreEnd end) {
+  switch (end) {
+    case ManoeuvreEnd::kExecuted: return "executed";
+    case ManoeuvreEnd::kRefused: return "refused";
+    case ManoeuvreEnd::kCanceled: return "canceled";
+  }
+  return "unknown";
+}
+
 RestMeasurement measureRest(double centre_x, double centre_y, double radius,
                             const Eigen::Quaterniond& attitude) {
   return {measuredRestPose(centre_x, centre_y, radius, attitude),
@@ -73,7 +82,7 @@ void ManoeuvreExecutive::offerPlans(const PlanRequest& request, const PlanResult
 }
 
 std::string ManoeuvreExecutive::execute(std::uint32_t index) {
-  if (busy()) {
+  if (executing()) {
     return "plan " + std::to_string(manoeuvre_ ? manoeuvre_->index : *requested_) +
            " is still executing; ignoring execute " + std::to_string(index);
   }
@@ -83,6 +92,22 @@ std::string ManoeuvreExecutive::execute(std::uint32_t index) {
   }
   requested_ = index;
   return {};
+}
+
+ManoeuvreVerdict ManoeuvreExecutive::cancel(Nanoseconds now,
+                                             const std::optional<RestMeasurement>& measurement) {
+  if (!executing()) throw std::logic_error("no execution in progress or requested to cancel");
+  stopping_ = true;
+  if (manoeuvre_) {
+    const ManoeuvreVerdict canceled =
+        verdictNow(ManoeuvreEnd::kCanceled, now, measurement, "canceled, the rotors brought to rest");
+    manoeuvre_.reset();
+    return canceled;
+  }
+  const std::uint32_t index = *requested_;
+  requested_.reset();
+  return verdict(ManoeuvreEnd::kCanceled, index, goalOf(index, measurement), 0, 0.0, measurement,
+                 "canceled before it started");
 }
 
 ManoeuvreExecutive::Output ManoeuvreExecutive::step(
@@ -96,10 +121,11 @@ ManoeuvreExecutive::Output ManoeuvreExecutive::step(
   } else if (manoeuvre_ && elapsed(now) > manoeuvre_->duration + parameters_.command_period &&
              elapsed(now) >= manoeuvre_->duration + parameters_.settle &&
              !startCorrection(now, measurement, out)) {
-    finish(measurement, out);
+    finish(now, measurement, out);
   }
   if (!manoeuvre_) {
     state_ = ManoeuvreState::kIdle;
+    if (stopping_) out.set_point = RotorSpeeds{0.0, 0.0};
   } else if (const double t = elapsed(now); t <= manoeuvre_->duration + parameters_.command_period) {
     // One sample past the end: the timing is at rest there, so the last set-point is zero.
     out.set_point = lagCompensatedSetPoint(manoeuvre_->schedule, std::max(t, 0.0),
@@ -109,7 +135,14 @@ ManoeuvreExecutive::Output ManoeuvreExecutive::step(
   } else {
     state_ = ManoeuvreState::kSettling;
   }
+  stopping_ = false;
   out.state = state_;
+  if (manoeuvre_) {
+    out.progress = ManoeuvreProgress{
+        state_, std::clamp(elapsed(now) / manoeuvre_->duration, 0.0, 1.0),
+        missFrom(manoeuvre_->goal, measurement), correctionsIn(*manoeuvre_),
+        stampSeconds(now - began_)};
+  }
   return out;
 }
 
@@ -120,6 +153,7 @@ void ManoeuvreExecutive::followClock(Nanoseconds now, Output& out) {
     if (manoeuvre_) {
       // The schedule goes on from where it was, not from where the jump would put it.
       manoeuvre_->start += now - last_step_;
+      began_ += now - last_step_;
       std::ostringstream text;
       text << "time jumped by " << out.clock_jump << " s to " << stampSeconds(now)
            << " s; the manoeuvre continues";
@@ -139,11 +173,20 @@ void ManoeuvreExecutive::begin(std::uint32_t index, Nanoseconds now,
     out.reports.push_back({Report::Kind::kWarning,
                            "no measured rest yet: the goal is the target from the zero state"});
   }
-  const RestPose goal = planEnd(measured ? measured->pose : RestPose{}, targets_[index]);
+  const RestPose goal = goalOf(index, measured);
   if (startFigureEight(index, plans_[index], plan_steps_, goal, parameters_.corrections,
                        ManoeuvreState::kExecuting, now, out)) {
     ++executions_;
+    began_ = now;
+  } else {
+    out.ended = verdict(ManoeuvreEnd::kRefused, index, goal, 0, 0.0, measured,
+                        "not started (" + out.reports.back().text + ")");
   }
+}
+
+RestPose ManoeuvreExecutive::goalOf(std::uint32_t index,
+                                    const std::optional<RestMeasurement>& measured) const {
+  return planEnd(measured ? measured->pose : RestPose{}, targets_[index]);
 }
 
 bool ManoeuvreExecutive::startFigureEight(std::uint32_t index, const FigureEight& curve, int steps,
@@ -272,14 +315,34 @@ bool ManoeuvreExecutive::planCorrection(Nanoseconds now, const RestMeasurement& 
   return true;
 }
 
-void ManoeuvreExecutive::finish(const std::optional<RestMeasurement>& measured, Output& out) {
-  last_miss_ = missFrom(manoeuvre_->goal, measured);
-  out.finished = manoeuvre_->index;
-  std::ostringstream text;
-  text << "plan " << manoeuvre_->index << " executed, " << last_miss_->distance << " m and "
-       << last_miss_->heading << " rad of heading off the goal";
-  out.reports.push_back(info(text.str()));
+void ManoeuvreExecutive::finish(Nanoseconds now, const std::optional<RestMeasurement>& measured,
+                                Output& out) {
+  out.ended = verdictNow(ManoeuvreEnd::kExecuted, now, measured, "executed");
+  out.reports.push_back(info(out.ended->message));
   manoeuvre_.reset();
+}
+
+ManoeuvreVerdict ManoeuvreExecutive::verdictNow(ManoeuvreEnd end, Nanoseconds now,
+                                                const std::optional<RestMeasurement>& measured,
+                                                const std::string& what) {
+  return verdict(end, manoeuvre_->index, manoeuvre_->goal, correctionsIn(*manoeuvre_),
+                 stampSeconds(now - began_), measured, what);
+}
+
+ManoeuvreVerdict ManoeuvreExecutive::verdict(ManoeuvreEnd end, std::uint32_t index,
+                                             const RestPose& goal, int corrections,
+                                             double elapsed,
+                                             const std::optional<RestMeasurement>& measured,
+                                             const std::string& what) {
+  last_miss_ = missFrom(goal, measured);
+  std::ostringstream text;
+  text << "plan " << index << " " << what << ", " << last_miss_->distance << " m and "
+       << last_miss_->heading << " rad of heading off the goal";
+  return {end, index, *last_miss_, corrections, elapsed, text.str()};
+}
+
+int ManoeuvreExecutive::correctionsIn(const Manoeuvre& manoeuvre) const {
+  return parameters_.corrections - manoeuvre.corrections_left;
 }
 
 Miss ManoeuvreExecutive::missFrom(const RestPose& goal,
@@ -292,10 +355,11 @@ Miss ManoeuvreExecutive::missFrom(const RestPose& goal,
 std::string ManoeuvreExecutive::describe() const {
   if (manoeuvre_) {
     return "executing plan " + std::to_string(manoeuvre_->index) + ", " +
-           std::to_string(parameters_.corrections - manoeuvre_->corrections_left) + " of " +
+           std::to_string(correctionsIn(*manoeuvre_)) + " of " +
            std::to_string(parameters_.corrections) + " corrections";
   }
   if (requested_) return "executing plan " + std::to_string(*requested_) + " from the next step";
+  if (stopping_) return "bringing the rotors to rest";
   return plans_.empty() ? "waiting for a plan request" : "idle";
 }
 

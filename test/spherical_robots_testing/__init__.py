@@ -1,8 +1,8 @@
 """What the package's test programs share (test/*_check.py): a topic recorder that notes each
-message's simulated arrival time, and waits on conditions and on simulated time, each bounded by a
-wall-clock deadline so that a stack that never gets there fails the test instead of hanging it;
-and, for the programs that launch stacks on masters of their own, a free port and a launch file's
-path.
+message's simulated arrival time, and waits on conditions, on simulated time and on an action
+goal's end, each bounded by a wall-clock deadline so that a stack that never gets there fails the
+test instead of hanging it; and, for the programs that launch stacks on masters of their own, a
+free port and a launch file's path.
 
 Not installed: it sits beside the test programs, which run from the package's source tree (the
 directory of the running program is on Python's path).
@@ -16,7 +16,7 @@ import time
 import rospkg
 import rospy
 
-__all__ = ['Recorder', 'wait_until', 'sim_sleep', 'publish_until', 'first_at_rest',
+__all__ = ['Recorder', 'wait_until', 'sim_sleep', 'GoalClient', 'publish_until', 'first_at_rest',
            'quaternion_angle', 'free_port', 'launch_file']
 
 PKG = 'spherical_robots'
@@ -67,6 +67,40 @@ def sim_sleep(seconds, timeout):
     end = rospy.Time.now().to_sec() + seconds
     wait_until(lambda: rospy.Time.now().to_sec() >= end, '%.1f s of simulated time' % seconds,
                timeout)
+
+
+class GoalClient:
+    """An actionlib SimpleActionClient of one action server that keeps its goal's feedback; its
+    waits are bounded by `timeout` [s] of wall time (the client's own count simulated time)."""
+
+    def __init__(self, name, action_type, timeout):
+        import actionlib  # only the action tests need it
+        self.done_state = actionlib.SimpleGoalState.DONE
+        self.client = actionlib.SimpleActionClient(name, action_type)
+        self.timeout = timeout
+        self.feedback = []
+        # Connected both ways, or a goal sent now could be lost (simulated time flows meanwhile).
+        wait_until(lambda: self.client.wait_for_server(rospy.Duration(0.1)),
+                   'the %s action server' % name, timeout)
+
+    def send(self, goal):
+        self.feedback = []
+        self.client.send_goal(goal, feedback_cb=self.feedback.append)
+
+    def done(self):
+        """Whether the goal has ended (its result received)."""
+        return self.client.simple_state == self.done_state
+
+    def result(self, what):
+        """(actionlib_msgs/GoalStatus state, result) once the goal has ended."""
+        wait_until(self.done, what, self.timeout)
+        return self.client.get_state(), self.client.get_result()
+
+    def state(self):
+        return self.client.get_state()
+
+    def cancel(self):
+        self.client.cancel_goal()
 
 
 def publish_until(publisher, messages, condition, what, timeout):

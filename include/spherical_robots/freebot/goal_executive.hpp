@@ -17,13 +17,14 @@
 
 namespace spherical_robots::freebot {
 
-/// A goal's status; each change is one GoalVerdict. In msg/FreebotGoalResult.msg's order.
+/// A goal's status; each change is one GoalVerdict. The codes of action/MoveFreebot.action, in
+/// its order.
 enum class GoalStatus {
   Moving,       ///< IK solved; the trolleys drive the joints to the solution
   Arrived,      ///< B_n within the goal tolerances
   Unreachable,  ///< IK found no pose within its tolerances: nothing moves
-  Rejected,     ///< malformed, or no chain state to plan from: never planned
-  Preempted,    ///< a newer goal replaced it
+  Rejected,     ///< malformed: never planned
+  Preempted,    ///< canceled, or replaced by a newer goal: the wheels stop
   Aborted,      ///< re-plans used up, or the timeout
 };
 
@@ -37,17 +38,18 @@ struct GoalPose {
   IkMode mode = IkMode::FullPose;
 };
 
-/// The errors of a verdict that measured nothing (Rejected, Preempted): −1, not NaN.
+/// The errors of a verdict that measured nothing (Rejected): −1, not NaN.
 constexpr double kNotMeasured = -1.0;
 
-/// One change of a goal's status.
+/// One change of a goal's status, or (ExecutiveStep::progress) where a moving goal stands.
 struct GoalVerdict {
   GoalStatus status = GoalStatus::Moving;
-  /// [m] B_n's distance to the goal: of the IK solution (Moving, Unreachable), of the measured
-  /// chain (Arrived, Aborted); kNotMeasured otherwise.
+  /// [m] B_n's distance to the goal: of the IK solution (a verdict Moving, Unreachable), of the
+  /// measured chain (Arrived, Preempted, Aborted, and every progress); kNotMeasured otherwise.
   double position_error = kNotMeasured;
   double orientation_error = kNotMeasured;  ///< [rad] likewise; 0 for a position-only goal
   double elapsed = 0.0;                     ///< [s] since the goal was accepted
+  int replans = 0;                          ///< IK solved again from a reached state, so far
   std::string message;                      ///< for a person: what happened and why
 };
 
@@ -67,6 +69,9 @@ struct ExecutiveStep {
   std::vector<SrcJointState> joint_targets;
   std::vector<WheelSpeeds> wheels;    ///< [rad/s] every module's; zero unless driving to a goal
   std::vector<GoalVerdict> verdicts;  ///< the goal's changes of status at this step, in order
+  /// The goal still in force after this step (Moving): its errors as measured at this step and
+  /// the message of its latest plan; none without one.
+  std::optional<GoalVerdict> progress;
 };
 
 class GoalExecutive {
@@ -75,11 +80,17 @@ class GoalExecutive {
   /// finite and > 0 and max_replans >= 0.
   GoalExecutive(FreebotChain chain, const GoalExecutiveParameters& parameters);
 
-  /// Takes a goal at time t [ns]: IK seeded with the last measured joints. Returns the verdicts:
-  /// Preempted for the goal in force (if any), then Moving, or Unreachable (the chain holds its
-  /// pose). @throw std::invalid_argument, with nothing changed, before any measurement, on a
-  /// non-finite position or a non-unit orientation of a FullPose goal.
-  std::vector<GoalVerdict> accept(const GoalPose& goal, Nanoseconds t);
+  /// Takes a goal at time t [ns]: IK seeded with the last measured joints. Returns its verdict:
+  /// Moving, or Unreachable (the chain holds its pose). A goal in force is ended by cancel()
+  /// first. @throw std::invalid_argument, with nothing changed, before any measurement, on a
+  /// non-finite position or a non-unit orientation of a FullPose goal; std::logic_error while a
+  /// goal is in force.
+  GoalVerdict accept(const GoalPose& goal, Nanoseconds t);
+
+  /// Ends the goal in force at time t [ns] (canceled, or about to be replaced): Preempted, with
+  /// B_n's errors to it as last measured. The next step() commands every wheel to rest.
+  /// @throw std::logic_error without a goal in force.
+  GoalVerdict cancel(Nanoseconds t);
 
   /// One control step at time t [ns] from the measured chain: the wheel set-points and the goal's
   /// verdicts. @throw std::invalid_argument, with nothing changed, unless measurement fits the
@@ -100,6 +111,7 @@ class GoalExecutive {
     Nanoseconds accepted = 0;
     std::vector<SrcJointState> targets;  ///< the IK solution being driven to
     int replans = 0;
+    std::string plan;  ///< the message of the latest plan
   };
 
   /// IK for goal from the last measurement: Moving (targets set) or Unreachable.
@@ -108,6 +120,8 @@ class GoalExecutive {
   std::pair<double, double> errors() const;
   /// Ends the goal in force with status; its errors as measured now.
   GoalVerdict finish(GoalStatus status, const std::string& why, Nanoseconds t);
+  /// The goal in force as measured now (Moving): ExecutiveStep::progress.
+  GoalVerdict progress(Nanoseconds t) const;
 
   FreebotChain chain_;
   GoalExecutiveParameters parameters_;

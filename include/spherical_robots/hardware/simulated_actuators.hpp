@@ -140,6 +140,10 @@ class SimulatedActuators {
   double commandAge() const;
   /// True from the watchdog deadline until the next accepted command.
   bool timedOut() const { return timed_out_; }
+  /// timedOut(), with every set-point already 0 at the deadline: the last command asked for
+  /// rest, so the watchdog stopped nothing. A controller that has finished and falls silent is
+  /// idle, not lost.
+  bool timedOutAtRest() const { return timed_out_ && timed_out_at_rest_; }
   bool eStopped() const { return e_stopped_; }
   /// True once any command has been accepted.
   bool hasCommand() const { return has_command_; }
@@ -182,6 +186,7 @@ class SimulatedActuators {
   bool clock_started_ = false;
   bool has_command_ = false;
   bool timed_out_ = false;
+  bool timed_out_at_rest_ = false;
   bool e_stopped_ = false;
 };
 

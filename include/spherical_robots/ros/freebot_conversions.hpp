@@ -1,7 +1,9 @@
 #pragma once
-// The FreeBOT stack's messages: wheel speeds as actuator JointStates, and FreebotState.
+// The FreeBOT stack's messages: wheel speeds as actuator JointStates, FreebotState, and the
+// move_freebot action's goals, feedback and results.
 
 #include <geometry_msgs/Pose.h>
+#include <geometry_msgs/PoseStamped.h>
 #include <sensor_msgs/JointState.h>
 #include <visualization_msgs/MarkerArray.h>
 
@@ -9,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "spherical_robots/FreebotGoalResult.h"
 #include "spherical_robots/FreebotState.h"
+#include "spherical_robots/MoveFreebotAction.h"
 #include "spherical_robots/freebot/freebot_chain.hpp"
 #include "spherical_robots/freebot/goal_executive.hpp"
 #include "spherical_robots/ros/conversions.hpp"
@@ -40,12 +42,17 @@ spherical_robots::FreebotState toFreebotStateMsg(const freebot::ChainState& stat
 /// 1e-6 or a heading is not finite or beyond 1e6 rad.
 freebot::ChainState chainStateFromMsg(const spherical_robots::FreebotState& msg);
 
-/// The verdict on a goal whose pose was `goal` (not echoed unless finite: a rejected goal may
-/// hold NaN or 1e300), in `frame`.
-spherical_robots::FreebotGoalResult toGoalResultMsg(const freebot::GoalVerdict& verdict,
-                                                    const geometry_msgs::Pose& goal,
-                                                    const std::string& frame,
-                                                    const ros::Time& stamp);
+/// The goal a target asks for: B_n's pose in `frame` (or an empty frame_id); an all-zero
+/// orientation asks for the position only, another one must be unit within `unit_tolerance`.
+/// @throw std::invalid_argument naming the field: another frame, a coordinate not finite or
+/// beyond max_distance [m], a quaternion not finite or not unit.
+freebot::GoalPose goalPoseFromMsg(const geometry_msgs::PoseStamped& target, const std::string& frame,
+                                  double max_distance, double unit_tolerance);
+
+/// The result of a goal that ended with `verdict` (not Moving).
+spherical_robots::MoveFreebotResult toMoveFreebotResult(const freebot::GoalVerdict& verdict);
+/// The feedback of a moving goal (ExecutiveStep::progress).
+spherical_robots::MoveFreebotFeedback toMoveFreebotFeedback(const freebot::GoalVerdict& progress);
 
 /// The tf frame of sphere B_i (i = 0: the fixed base): "<prefix>link<i>".
 std::string freebotLinkFrame(const std::string& prefix, std::size_t i);

@@ -1,6 +1,7 @@
 #pragma once
-// The freebot_ik node: goals and chain states in, the core GoalExecutive's wheel set-points and
-// verdicts out; IK alone as a service (docs/nodes.md, "freebot_ik").
+// The freebot_ik node: goals (the move_freebot action) and chain states in, the core
+// GoalExecutive's wheel set-points, feedback and verdicts out; IK alone as a service
+// (docs/nodes.md, "freebot_ik").
 
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/PoseStamped.h>
@@ -8,14 +9,15 @@
 
 #include <optional>
 
-#include "spherical_robots/FreebotGoalResult.h"
 #include "spherical_robots/FreebotState.h"
+#include "spherical_robots/MoveFreebotAction.h"
 #include "spherical_robots/SolveFreebotIk.h"
 #include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/freebot/goal_executive.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/lockstep_participant.hpp"
 #include "spherical_robots/ros/loop_publishers.hpp"
+#include "spherical_robots/ros/single_goal_server.hpp"
 
 namespace spherical_robots {
 
@@ -40,21 +42,31 @@ class FreebotIkRos {
 
  private:
   void onState(const spherical_robots::FreebotState& msg);
-  /// One executive step from one state (nothing for a rejected state): set-points and verdicts.
+  /// One executive step from one state (nothing for a rejected state): the goals' ends and
+  /// starts, set-points, feedback and verdicts.
   void drive(const spherical_robots::FreebotState& msg);
-  void onGoal(const geometry_msgs::PoseStamped& msg);
+  /// The goal a target asks for. @throw std::invalid_argument naming what is wrong.
+  freebot::GoalPose goalPose(const geometry_msgs::PoseStamped& target) const;
+  /// In the goal callback: the rejection of a malformed goal, or nullopt.
+  std::optional<spherical_robots::MoveFreebotResult> check(
+      const spherical_robots::MoveFreebotGoal& goal);
+  /// Rejects a goal for `why`: logged, counted and kept for diagnostics; its result.
+  spherical_robots::MoveFreebotResult rejection(const std::string& why);
+  /// At a step at t: ends the goal in force if it is canceled or replaced, then takes the
+  /// waiting goal once a chain state has been measured to plan from.
+  void takeGoals(const ros::Time& t);
   bool onSolve(spherical_robots::SolveFreebotIk::Request& request,
                spherical_robots::SolveFreebotIk::Response& response);
-  /// Publishes, logs and keeps (for diagnostics) a verdict on the goal `pose`.
-  void publishResult(const freebot::GoalVerdict& verdict, const geometry_msgs::Pose& pose,
-                     const ros::Time& now);
+  /// A verdict on the goal in force: logged and kept for diagnostics; one that ends the goal
+  /// ends its action goal in the state it maps to.
+  void follow(const freebot::GoalVerdict& verdict);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   FreebotIkParameters parameters_;
   freebot::GoalExecutive executive_;
-  geometry_msgs::Pose goal_pose_;  ///< of the goal in force, echoed in its verdicts
+  geometry_msgs::Point target_;  ///< of the goal in force, for the logs
   std::optional<freebot::GoalVerdict> last_verdict_;
-  unsigned long goals_ = 0;
+  unsigned long goals_taken_ = 0;
   unsigned long unreachable_ = 0;
   InputMonitor state_input_;
   InputMonitor goal_input_;
@@ -62,10 +74,9 @@ class FreebotIkRos {
   /// Drives from each state when it comes, or in lock-step at the step it is stamped with.
   MessageDrivenWork<spherical_robots::FreebotState> work_;
   ros::Subscriber state_sub_;
-  ros::Subscriber goal_sub_;
   LoopPublisher command_pub_;
-  ros::Publisher result_pub_;
   ros::Publisher target_pub_;
+  SingleGoalServer<spherical_robots::MoveFreebotAction> goals_;  ///< move_freebot
   ros::ServiceServer solve_server_;
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)

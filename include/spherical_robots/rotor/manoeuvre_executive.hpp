@@ -11,7 +11,8 @@
 // zero; then `settle` s at rest. With corrections left, the measured rest then decides: the
 // contact off the south pole, and the last manoeuvre not already such an arc: a PoleReturnArc;
 // else, off the goal by more than the tolerances: a one-step figure eight from there to the goal.
-// Otherwise the execution is finished.
+// Otherwise the execution is finished. A cancel ends it where the sphere stands: the rotors are
+// commanded to rest at the next step.
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -58,6 +59,37 @@ struct Miss {
   double heading = 0.0;
 };
 
+/// How an execution ended.
+enum class ManoeuvreEnd {
+  kExecuted,  ///< traced, with its corrections, and settled: the miss is where the sphere rests
+  kRefused,   ///< it could not start (no set-points for the plan): nothing was commanded
+  kCanceled,  ///< cancel(): the rotors are brought to rest where the sphere stands
+};
+
+/// "executed", "refused", "canceled".
+const char* toString(ManoeuvreEnd end);
+
+/// The verdict on one execution: a plan and the corrections after it.
+struct ManoeuvreVerdict {
+  ManoeuvreEnd end = ManoeuvreEnd::kExecuted;
+  std::uint32_t index = 0;  ///< the plan executed
+  Miss miss;                ///< of the measured sphere (the zero state if none) from the goal
+  int corrections = 0;      ///< corrective manoeuvres made in this execution
+  double elapsed = 0.0;     ///< [s] since the execution started; 0 if it never did
+  std::string message;      ///< for a person
+};
+
+/// Where an execution in progress stands after a step.
+struct ManoeuvreProgress {
+  ManoeuvreState state = ManoeuvreState::kExecuting;
+  /// [0, 1] of the time of the manoeuvre being traced (the plan's, or a correction's); 1 while
+  /// settling.
+  double fraction = 0.0;
+  Miss miss;              ///< of the measured sphere (the zero state if none) from the goal
+  int corrections = 0;    ///< made so far in this execution
+  double elapsed = 0.0;   ///< [s] since the execution started
+};
+
 class ManoeuvreExecutive {
  public:
   struct Parameters {
@@ -87,8 +119,9 @@ class ManoeuvreExecutive {
   /// What to do after a step.
   struct Output {
     ManoeuvreState state = ManoeuvreState::kIdle;
-    std::optional<RotorSpeeds> set_point;   ///< [rad/s] to command now; none: command nothing
-    std::optional<std::uint32_t> finished;  ///< the plan whose execution ended at this step
+    std::optional<RotorSpeeds> set_point;  ///< [rad/s] to command now; none: command nothing
+    std::optional<ManoeuvreVerdict> ended;  ///< the execution that ended at this step
+    std::optional<ManoeuvreProgress> progress;  ///< the execution in progress after this step
     double clock_jump = 0.0;  ///< [s] time jumped by this much before the step; 0: it did not
     std::vector<Report> reports;
   };
@@ -106,6 +139,12 @@ class ManoeuvreExecutive {
   /// @return empty if accepted, else the refusal.
   std::string execute(std::uint32_t index);
 
+  /// Ends the execution in progress or requested at `now` [ns], with the latest measurement of
+  /// the sphere: kCanceled, its miss as measured. The next step commands the rotors to rest (one
+  /// zero set-point) unless a new execution starts there. @throw std::logic_error if there is
+  /// none to cancel.
+  ManoeuvreVerdict cancel(Nanoseconds now, const std::optional<RestMeasurement>& measurement);
+
   /// The step at `now` [ns] with the latest measurement of the sphere (none before the first).
   /// A requested execution starts here, its goal the plan's target taken from the measured rest
   /// (the zero state if none). A jump of the clock (max_clock_step) shifts the manoeuvre's start
@@ -113,14 +152,19 @@ class ManoeuvreExecutive {
   Output step(Nanoseconds now, const std::optional<RestMeasurement>& measurement);
 
   ManoeuvreState state() const { return state_; }
-  /// Whether an execution is in progress or requested.
-  bool busy() const { return manoeuvre_.has_value() || requested_.has_value(); }
-  /// "executing plan I, C of N corrections" while busy, else "idle" or "waiting for a plan request".
+  /// Whether an execution is in progress or requested (what cancel() ends).
+  bool executing() const { return manoeuvre_.has_value() || requested_.has_value(); }
+  /// Whether the next step has something to do: executing(), or the rotors to bring to rest
+  /// after a cancel.
+  bool busy() const { return executing() || stopping_; }
+  /// "executing plan I, C of N corrections" while executing, else "bringing the rotors to rest",
+  /// "idle" or "waiting for a plan request".
   std::string describe() const;
   std::size_t plansAvailable() const { return plans_.size(); }
   unsigned long executions() const { return executions_; }
   unsigned long correctionsMade() const { return corrections_made_; }
-  /// How far the last finished execution ended from its goal; none before the first.
+  /// How far the last execution to end (ManoeuvreVerdict::miss) was from its goal; none before
+  /// the first.
   const std::optional<Miss>& lastMiss() const { return last_miss_; }
   const Parameters& parameters() const { return parameters_; }
 
@@ -136,6 +180,8 @@ class ManoeuvreExecutive {
   };
 
   void followClock(Nanoseconds now, Output& out);
+  /// The goal of plan `index` executed from the measured rest (the zero state if none).
+  RestPose goalOf(std::uint32_t index, const std::optional<RestMeasurement>& measured) const;
   void begin(std::uint32_t index, Nanoseconds now, const std::optional<RestMeasurement>& measured,
              Output& out);
   /// Starts tracing `curve` n times toward `goal`; false (refused in out) if it cannot.
@@ -151,7 +197,18 @@ class ManoeuvreExecutive {
   bool startCorrection(Nanoseconds now, const std::optional<RestMeasurement>& measured,
                        Output& out);
   bool planCorrection(Nanoseconds now, const RestMeasurement& measured, Output& out);
-  void finish(const std::optional<RestMeasurement>& measured, Output& out);
+  void finish(Nanoseconds now, const std::optional<RestMeasurement>& measured, Output& out);
+  /// The verdict on the execution of plan `index` toward `goal` (keeps its miss as lastMiss()):
+  /// "plan <index> <what>, <miss>".
+  ManoeuvreVerdict verdict(ManoeuvreEnd end, std::uint32_t index, const RestPose& goal,
+                           int corrections, double elapsed,
+                           const std::optional<RestMeasurement>& measured, const std::string& what);
+  /// The verdict on the manoeuvre in progress at now.
+  ManoeuvreVerdict verdictNow(ManoeuvreEnd end, Nanoseconds now,
+                              const std::optional<RestMeasurement>& measured,
+                              const std::string& what);
+  /// Corrective manoeuvres made so far in the execution of `manoeuvre`.
+  int correctionsIn(const Manoeuvre& manoeuvre) const;
   Miss missFrom(const RestPose& goal, const std::optional<RestMeasurement>& measured) const;
   /// [s] since the manoeuvre started at now.
   double elapsed(Nanoseconds now) const;
@@ -166,6 +223,8 @@ class ManoeuvreExecutive {
   std::vector<PlanTarget> targets_;    ///< what each of plans_ reaches from the zero state
   std::optional<std::uint32_t> requested_;
   std::optional<Manoeuvre> manoeuvre_;
+  Nanoseconds began_ = 0;  ///< when the execution in progress started
+  bool stopping_ = false;  ///< canceled: the next step commands the rotors to rest
   ManoeuvreState state_ = ManoeuvreState::kIdle;
   unsigned long executions_ = 0;
   unsigned long corrections_made_ = 0;
