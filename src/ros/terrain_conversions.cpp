@@ -104,9 +104,9 @@ nav_msgs::Path sampledPath(const terrain::ReferencePath& path, const terrain::Su
   nav_msgs::Path msg;
   msg.header.stamp = stamp;
   msg.header.frame_id = frame;
-  const double period = path.period();
+  const double duration = path.duration();
   for (int i = 0; i < samples; ++i) {
-    const double t = period * i / (samples - 1);
+    const double t = duration * i / (samples - 1);
     const terrain::DesiredPoint point = terrain::liftOntoSurface(path, surface, t);
     msg.poses.push_back(toPoseStamped(point.position, Eigen::Quaterniond::Identity(), frame, stamp));
   }

@@ -53,7 +53,8 @@ spherical_robots::TrackingError toTrackingErrorMsg(const terrain::TrackingError&
 
 // --- Visualisation ------------------------------------------------------------------------------
 
-/// One period of the path lifted onto the surface, `samples` poses (closing the loop).
+/// The path over its duration() lifted onto the surface, `samples` poses (one lap of a closed
+/// path, closing the loop).
 /// @throw std::invalid_argument if samples < 2.
 nav_msgs::Path sampledPath(const terrain::ReferencePath& path, const terrain::Surface& surface,
                            int samples, const std::string& frame, const ros::Time& stamp);
