@@ -10,9 +10,13 @@ state topic with an unbounded queue; the launch argument wait_for_subscribers ma
 only once this checker is connected, so it sees every state from the first. In lock-step the
 results do not depend on the machine's load: there is no timing assert here.
 
+With --path-poses N (terrain) the stack follows no built-in path (path:=topic): this checker sends
+it the circle of config/terrain.yaml as a latched nav_msgs/Path of N + 1 poses over one lap, timed,
+before time starts, and the batch run follows the built-in circle (test/terrain_path_topic.test).
+
 As a rostest node (test/{terrain,roller,norma,rotor}_batch_equality.test) and from a shell alike:
     batch_equality_check.py --stack terrain|roller|norma|rotor [--duration S] [--bound 1e-9] \
-        [--sphere-sim PATH] [-- launch args, e.g. robot:=RS path:=diamond nodelet:=true]
+        [--path-poses N] [--sphere-sim PATH] [-- launch args, e.g. robot:=RS path:=diamond]
 Launch arguments the batch run also takes (terrain: robot, path, model, law, actuator_models;
 roller: path, law, actuator_models; rotor: k, steps, target, curve_rate, actuator_time_constant,
 corrections, correction_tolerance, correction_tilt_tolerance, actuator_models) are passed to
@@ -20,6 +24,7 @@ sphere_sim too.
 """
 import argparse
 import csv
+import math
 import os
 import shutil
 import subprocess
@@ -49,6 +54,7 @@ class StackCase:
         self.ns = ns
         self.topics = topics  # [(topic, message type, [(name, value of a message, column, unit)])]
         self.sphere_sim_args = sphere_sim_args
+        self.path_message = None  # a nav_msgs/Path to send the stack before time starts
 
 
 def launch_value(args, name, default):
@@ -136,6 +142,31 @@ def rotor_case(duration, extra_args):
         sphere_sim_args=sphere_sim_args)
 
 
+def sampled_circle(poses):
+    """config/terrain.yaml's circle as a nav_msgs/Path of poses + 1 timed poses over one lap (the
+    last the first: a closed path), stamped from 0, in the controllers' fixed frame."""
+    import yaml
+    from geometry_msgs.msg import PoseStamped
+    from nav_msgs.msg import Path
+    import rospy
+    with open(os.path.join(rospkg.RosPack().get_path(PKG), 'config', 'terrain.yaml')) as f:
+        circle = yaml.safe_load(f)['terrain']['paths']['circle']
+    radius, rate = float(circle['radius']), float(circle['angular_rate'])
+    period = 2.0 * math.pi / rate
+    msg = Path()
+    msg.header.frame_id = 'world'
+    for i in range(poses + 1):
+        t = period * i / poses
+        pose = PoseStamped()
+        pose.header.frame_id = msg.header.frame_id
+        pose.header.stamp = rospy.Time.from_sec(t)
+        pose.pose.position.x = radius * math.cos(rate * t)
+        pose.pose.position.y = radius * math.sin(rate * t)
+        pose.pose.orientation.w = 1.0
+        msg.poses.append(pose)
+    return msg
+
+
 STACKS = {'terrain': terrain_case, 'roller': roller_case, 'norma': norma_case, 'rotor': rotor_case}
 
 
@@ -174,6 +205,13 @@ class StateCollector:
             rospy.Subscriber('/%s/%s' % (case.ns, topic), message_type, self.on_message,
                              callback_args=topic, queue_size=None, tcp_nodelay=True)
             for topic, message_type, _ in case.topics]
+        if case.path_message is not None:
+            from nav_msgs.msg import Path
+            # Latched: the controller takes it whenever it connects, and (path:=topic) joins
+            # lock-step time only once it has it.
+            self.path_publisher = rospy.Publisher('/%s/path' % case.ns, Path, queue_size=1,
+                                                  latch=True)
+            self.path_publisher.publish(case.path_message)
 
     def on_message(self, msg, topic):
         with self.lock:
@@ -229,13 +267,21 @@ def run_stack(case, duration, extra_args, workdir):
     return {topic: sorted(m, key=lambda s: s[0]) for topic, m in collector.messages.items()}, wall
 
 
-def compare(case_name, duration, bound, sphere_sim, extra_args, workdir):
+def compare(case_name, duration, bound, sphere_sim, extra_args, workdir, path_poses=0):
     case = STACKS[case_name](duration, extra_args)
+    if path_poses:
+        if case_name != 'terrain' or launch_value(extra_args, 'path', 'circle') != 'circle':
+            raise AssertionError('--path-poses sends the terrain stack its circle')
+        case.launch_args.append('path:=topic')
+        case.path_message = sampled_circle(path_poses)
     rows, batch_wall = batch_rows(sphere_sim, case, workdir)
     messages, stack_wall = run_stack(case, duration, extra_args, workdir)
     report = ['%s: %s from the stack (%.1f s of wall time), %d rows from sphere_sim (%.2f s)'
               % (case_name, ', '.join('%d %s' % (len(messages[t]), t) for t, _, _ in case.topics),
                  stack_wall, len(rows), batch_wall)]
+    if path_poses:
+        report.append('the stack followed the circle sent as a nav_msgs/Path of %d poses, the '
+                      'batch run the built-in circle' % len(case.path_message.poses))
     if not all(messages.values()):
         raise AssertionError('a topic had no message\n' + '\n'.join(report))
     # Time since the stack's first step: the first state, which the checker sees (time starts
@@ -283,6 +329,9 @@ def parse(argv):
     parser.add_argument('--duration', type=float, default=60.0, help='simulated seconds')
     parser.add_argument('--bound', type=float, default=1e-9,
                         help='largest difference allowed in any length [m]')
+    parser.add_argument('--path-poses', type=int, default=0,
+                        help='terrain: send the stack its circle as a nav_msgs/Path of this many '
+                             'intervals (path:=topic)')
     parser.add_argument('--sphere-sim', help='the sphere_sim to run (default: the package\'s)')
     parser.add_argument('--keep', action='store_true', help='keep the work directory')
     parser.add_argument('launch_args', nargs='*', metavar='ARG',
@@ -297,7 +346,8 @@ def check(options):
     workdir = tempfile.mkdtemp(prefix='batch_equality.')
     try:
         print(compare(options.stack, options.duration, options.bound,
-                      options.sphere_sim or find_sphere_sim(), options.launch_args, workdir))
+                      options.sphere_sim or find_sphere_sim(), options.launch_args, workdir,
+                      options.path_poses))
     except AssertionError:
         print('work directory kept: %s' % workdir)
         raise

@@ -3,11 +3,11 @@
 launch/norma_stack.launch), headless, in simulated time.
 
 Runs in the stack's namespace (test/terrain_*.test, test/roller_*.test). Private params: ~mode
-(tracking | teleop | seam | roller | norma | smoothness; see the classes) and ~frame_prefix. Times are simulated (the plant owns
-/clock), bounded by generous wall-clock deadlines. In lock-step a run does not depend on the
-machine's load, so with ~batch the tracking error must equal the batch run's (sphere_sim terrain
---loop sampled) to 1e-9; the contact point lies on the surface, which the plant never integrates
-off, to 1e-6.
+(tracking | teleop | seam | roller | norma | smoothness | user_path; see the classes) and
+~frame_prefix. Times are simulated (the plant owns /clock), bounded by generous wall-clock
+deadlines. In lock-step a run does not depend on the machine's load, so with ~batch the tracking
+error must equal the batch run's (sphere_sim terrain --loop sampled) to 1e-9; the contact point
+lies on the surface, which the plant never integrates off, to 1e-6.
 """
 import functools
 import math
@@ -21,7 +21,7 @@ import rospy
 import rostest
 import tf2_ros
 from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
-from geometry_msgs.msg import Twist, Vector3
+from geometry_msgs.msg import PoseStamped, Twist, Vector3
 from nav_msgs.msg import Odometry, Path
 from sensor_msgs.msg import JointState
 from std_msgs.msg import Bool
@@ -73,10 +73,11 @@ def tracking_in_window(errors, first_step=None):
     return mean, worst, len(window)
 
 
-def batch_window():
+def batch_window(path_args=None):
     """The same figures from `sphere_sim terrain --loop sampled` on this stack's scenario: what a
     terrain stack in lock-step publishes, value for value (docs/lockstep.md,
-    "Equal to the batch run"), so its bound is the batch run's figure itself."""
+    "Equal to the batch run"), so its bound is the batch run's figure itself. path_args: the
+    batch run's path options (default: --path, the controller's built-in path)."""
     import csv
     import roslib.packages
     import rospkg
@@ -90,8 +91,9 @@ def batch_window():
                if surface['type'] == 'height_map' else [])
     subprocess.run([roslib.packages.find_node(PKG, 'sphere_sim')[0], 'terrain', '--loop', 'sampled',
                     '--stack', stack,
-                    '--robot', controller['robot_type'], '--path', controller['path'],
-                    '--law', controller['law'], '--model', plant['contact_model'],
+                    '--robot', controller['robot_type']] +
+                   (path_args or ['--path', controller['path']]) +
+                   ['--law', controller['law'], '--model', plant['contact_model'],
                     '--duration', '%g' % SETTLE[1], '--log-rate', '50',
                     '--config', rospkg.RosPack().get_path(PKG), '--out', out] + terrain +
                    (['--actuator-models', rospy.get_param('~actuator_models')]
@@ -104,17 +106,22 @@ def batch_window():
     return sum(window) / len(window), max(window), len(window)
 
 
+def assert_tracking_like_the_batch_run(case, errors, path_args=None):
+    """|e_t| over SETTLE equals the batch run's (batch_window) to 1e-9, mean and max."""
+    mean, worst, count = tracking_in_window(errors, rospy.get_param('terrain_plant/step', 0.01))
+    batch = batch_window(path_args)
+    rospy.loginfo('batch run over the same window: mean %.17g m, max %.17g m, %d samples' % batch)
+    case.assertEqual(count, batch[2])
+    case.assertLessEqual(abs(mean - batch[0]), 1e-9)
+    case.assertLessEqual(abs(worst - batch[1]), 1e-9)
+
+
 def assert_tracking(case, errors):
     """~batch true (a terrain stack in lock-step, hardware:=sim or loopback; ~actuator_models the
     file the stack's actuator_models:= names, if any): |e_t| over SETTLE equals the batch run's to
     1e-9; otherwise below ~mean_bound and ~max_bound [m]."""
     if rospy.get_param('~batch', False):
-        mean, worst, count = tracking_in_window(errors, rospy.get_param('terrain_plant/step', 0.01))
-        batch = batch_window()
-        rospy.loginfo('batch run over the same window: mean %.17g m, max %.17g m, %d samples' % batch)
-        case.assertEqual(count, batch[2])
-        case.assertLessEqual(abs(mean - batch[0]), 1e-9)
-        case.assertLessEqual(abs(worst - batch[1]), 1e-9)
+        assert_tracking_like_the_batch_run(case, errors)
     else:
         mean, worst, _ = tracking_in_window(errors)
         case.assertLess(mean, float(rospy.get_param('~mean_bound')))
@@ -601,6 +608,133 @@ class NormaCheck(StackFixture):
                         'torques with the loaded PID2 gains back')
 
 
+def path_message(points, stamps=None, frame='world'):
+    """A nav_msgs/Path through (x, y) points, its poses stamped `stamps` [s] (default all 0)."""
+    msg = Path()
+    msg.header.frame_id = frame
+    for i, (x, y) in enumerate(points):
+        pose = PoseStamped()
+        pose.header.frame_id = frame
+        pose.header.stamp = rospy.Time.from_sec(stamps[i] if stamps else 0.0)
+        pose.pose.position.x, pose.pose.position.y = x, y
+        pose.pose.orientation.w = 1.0
+        msg.poses.append(pose)
+    return msg
+
+
+class UserPathCheck(StackFixture):
+    """mode:=user_path: the terrain stack with path:=topic follows the untimed path of ~path_file
+    that scripts/publish_path.py sent it, refuses bad paths keeping it, and takes a path in
+    another frame through tf (test/terrain_user_path.test)."""
+
+    @classmethod
+    def setUpClass(cls):
+        super().setUpClass()
+        cls.errors = Recorder('tracking_error', TrackingError)
+        cls.desired_paths = Recorder('desired_path', Path)
+        cls.path_pub = rospy.Publisher('path', Path, queue_size=10)
+        cls.path_file = rospy.get_param('~path_file')
+        cls.speed = float(rospy.get_param('pure_pursuit_controller/untimed_speed'))
+
+    def path_points(self):
+        """The (x, y) rows of ~path_file (header and comments skipped)."""
+        points = []
+        with open(self.path_file) as f:
+            for line in f:
+                cells = line.strip().split(',')
+                try:
+                    points.append((float(cells[0]), float(cells[1])))
+                except ValueError:
+                    continue
+        return points
+
+    def controller_level(self):
+        for array in reversed(self.diagnostics.since(0)):
+            for status in array.status:
+                if status.name.endswith(CONTROLLER_STATUS):
+                    return status.level, status.message
+        return None, ''
+
+    def test_01_tracks_the_path_within_the_built_in_paths_bounds(self):
+        assert_tracking_like_the_batch_run(
+            self, self.errors, ['--path-file', self.path_file, '--speed', repr(self.speed)])
+        points = self.path_points()
+        end = sum(math.dist(a, b) for a, b in zip(points, points[1:])) / self.speed
+        start = int(round(rospy.get_param('terrain_plant/step', 0.01) * 1e9))
+        wait_until(lambda: self.errors.last().header.stamp.to_nsec() - start > (end + 5.0) * 1e9,
+                   'the end of the path, %.0f s of simulated tracking' % (end + 5.0))
+        run = [(m.header.stamp.to_nsec() - start, m.error_norm) for m in self.errors.since(0)]
+        after = [e for t, e in run if t >= SETTLE[0] * 1e9]
+        worst, mean = max(e for _, e in run), sum(after) / len(after)
+        rospy.loginfo('user path (%.1f s at %g m/s): max |e_t| %.4g m over the run, mean %.4g m '
+                      'after %g s', end, self.speed, worst, mean, SETTLE[0])
+        # test_terrain_tracking's bounds for the circle: from the start, as the path starts where
+        # the robot stands.
+        self.assertLess(worst, 0.3)
+        self.assertLess(mean, 0.1)
+
+    def test_02_bad_paths_are_refused_and_the_path_kept(self):
+        wait_until(lambda: self.diagnostic_value(CONTROLLER_STATUS, 'path') is not None,
+                   'the controller\'s path on /diagnostics')
+        followed = self.diagnostic_value(CONTROLLER_STATUS, 'path')
+        self.assertIn('sampled path of %d points' % len(self.path_points()), followed)
+        desired_paths = self.desired_paths.count()
+        topic = rospy.resolve_name('path')
+        line = [(0.0, 0.0), (1.0, 0.0), (2.0, 0.0)]
+        cases = [
+            ('NaN', path_message([(0.0, 0.0), (1.0, 0.0), (2.0, float('nan'))]),
+             ['poses[2].pose.position.y', 'nan']),
+            ('one pose', path_message([(0.0, 0.0)]), ['at least 2 points', 'got 1']),
+            ('decreasing stamps', path_message(line, [1.0, 3.0, 2.0]),
+             ['path point 2', 'is not after point 1']),
+            ('an unknown frame', path_message(line, frame='no_such_frame'),
+             ['no transform', 'no_such_frame']),
+            ('no frame', path_message(line, frame=''), ['frame_id is empty']),
+        ]
+        for label, msg, words in cases:
+            refused = int(self.diagnostic_value(CONTROLLER_STATUS, topic + ' refused') or 0)
+            publish_when_connected(self.path_pub, msg)
+            wait_until(lambda: int(self.diagnostic_value(CONTROLLER_STATUS, topic + ' refused')
+                                   or 0) > refused, 'the controller to refuse the path with ' + label)
+            reason = self.diagnostic_value(CONTROLLER_STATUS, topic + ' last refusal')
+            rospy.loginfo('path with %s refused: %s', label, reason)
+            for word in words:
+                self.assertIn(word, reason, label)
+            level, message = self.controller_level()
+            self.assertEqual(level, DiagnosticStatus.WARN, message)
+            self.assertIn('path refused', message)
+            self.assertEqual(self.diagnostic_value(CONTROLLER_STATUS, 'path'), followed, label)
+        self.assertEqual(self.desired_paths.count(), desired_paths, 'a refused path was shown')
+        self.assert_nodes_alive()
+        self.assertLess(self.errors.last().error_norm, 0.3)
+
+    def test_03_a_path_in_another_frame_goes_through_tf_and_replaces_the_last(self):
+        from geometry_msgs.msg import TransformStamped
+        broadcaster = tf2_ros.StaticTransformBroadcaster()
+        offset = TransformStamped()
+        offset.header.frame_id = 'world'
+        offset.child_frame_id = 'user_path_frame'
+        offset.transform.translation.x, offset.transform.translation.y = 1.0, -0.5
+        # a quarter turn about z: (x, y) -> (-y, x)
+        offset.transform.rotation.z = offset.transform.rotation.w = math.sqrt(0.5)
+        broadcaster.sendTransform(offset)
+        shown = self.desired_paths.count()
+        accepted = int(self.diagnostic_value(CONTROLLER_STATUS, rospy.resolve_name('path') + ' accepted'))
+        publish_when_connected(self.path_pub, path_message([(0.0, 0.0), (1.0, 0.0), (2.0, 0.0)],
+                                                           frame='user_path_frame'))
+        wait_until(lambda: self.desired_paths.count() > shown, 'the new path on desired_path')
+        desired = self.desired_paths.last()
+        self.assertEqual(desired.header.frame_id, 'world')
+        first, last = desired.poses[0].pose.position, desired.poses[-1].pose.position
+        self.assertAlmostEqual(math.dist((first.x, first.y), (1.0, -0.5)), 0.0, delta=1e-9)
+        self.assertAlmostEqual(math.dist((last.x, last.y), (1.0, 1.5)), 0.0, delta=1e-9)
+        wait_until(lambda: 'user_path_frame' in (self.diagnostic_value(CONTROLLER_STATUS, 'path from') or ''),
+                   'the new path on /diagnostics')
+        self.assertEqual(int(self.diagnostic_value(CONTROLLER_STATUS,
+                                                   rospy.resolve_name('path') + ' accepted')),
+                         accepted + 1)
+
+
 class SmoothnessCheck(StackFixture):
     """mode:=smoothness: issue 13's criteria on the set-points the controller sends (the default,
     smooth law): after 40 s of simulated time, until ~until [s] (100), consecutive
@@ -698,5 +832,5 @@ if __name__ == '__main__':
     mode = rospy.get_param('~mode', 'tracking')
     rostest.rosrun(PKG, NAME, {'teleop': TeleopCheck, 'seam': SeamCheck, 'roller': RollerCheck,
                                'norma': NormaCheck, 'height_map': HeightMapCheck,
-                               'off_map': OffMapCheck,
+                               'off_map': OffMapCheck, 'user_path': UserPathCheck,
                                'smoothness': SmoothnessCheck}.get(mode, TrackingCheck))

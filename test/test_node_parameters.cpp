@@ -118,12 +118,23 @@ TEST(PurePursuitControllerParameters, DefaultsOverridesAndErrors) {
   EXPECT_EQ(p.max_stamp_skew, 1.0);
   EXPECT_EQ(p.max_clock_step, 5.0);
   EXPECT_EQ(p.teleop_tilt_gain, 2.0);
-  const auto q = fromYaml("mode: teleop\nlaw: paper\nrobot_type: 2R\nrate: 100\n",
+  EXPECT_EQ(p.untimed_speed, 0.1);
+  EXPECT_EQ(p.path_tf_timeout, 1.0);
+  const auto q = fromYaml("mode: teleop\nlaw: paper\nrobot_type: 2R\nrate: 100\n"
+                          "path: topic\nuntimed_speed: 0.25\n",
                           sr::loadPurePursuitControllerParameters);
   EXPECT_EQ(q.mode, P::Mode::Teleop);
   EXPECT_EQ(q.law, sr::terrain::PursuitLaw::Paper);
   EXPECT_EQ(q.robot_type, sr::terrain::RobotType::TwoAxisRolling);
   EXPECT_EQ(q.rate, 100.0);
+  EXPECT_EQ(q.path, P::kPathFromTopic);
+  EXPECT_EQ(q.untimed_speed, 0.25);
+  EXPECT_INVALID_ARGUMENT(fromYaml("untimed_speed: 0\n", sr::loadPurePursuitControllerParameters),
+                          "untimed_speed", "> 0");
+  // config/terrain.yaml, loaded into the stack's namespace, gives the node its documented default.
+  EXPECT_EQ(config::YamlParameterSource(SPHERICAL_ROBOTS_SOURCE_DIR "/config/terrain.yaml")
+                .number("pure_pursuit_controller/untimed_speed"),
+            P{}.untimed_speed);
   EXPECT_INVALID_ARGUMENT(fromYaml("mode: drive\n", sr::loadPurePursuitControllerParameters),
                           "mode", "drive", "tracking | teleop");
   EXPECT_INVALID_ARGUMENT(fromYaml("law: fast\n", sr::loadPurePursuitControllerParameters),

@@ -150,6 +150,58 @@ TEST(TerrainStateConversion, RejectsBadGeometry) {
   EXPECT_THROW(conv::contactGeometryFromMsg(bad, kMaxPosition), std::invalid_argument);
 }
 
+nav_msgs::Path pathMessage(const std::string& frame) {
+  nav_msgs::Path msg;
+  msg.header.frame_id = frame;
+  for (int i = 0; i < 3; ++i) {
+    geometry_msgs::PoseStamped pose;
+    pose.header.stamp.fromSec(10.0 + i);
+    pose.pose.position.x = i;
+    pose.pose.position.y = 2.0 * i;
+    pose.pose.position.z = 5.0;
+    pose.pose.orientation.w = 1.0;
+    msg.poses.push_back(pose);
+  }
+  return msg;
+}
+
+TEST(PathConversion, PosesBecomeStampedPointsInTheFixedFrame) {
+  // The path's frame a quarter turn about z and 1 m along x from the fixed frame: (x, y) ->
+  // (1 - y, x), worked by hand.
+  geometry_msgs::Transform transform;
+  transform.translation.x = 1.0;
+  transform.rotation.z = transform.rotation.w = std::sqrt(0.5);
+  const Eigen::Isometry3d to_fixed = conv::fromTransform(transform, "test");
+  const std::vector<sr::terrain::StampedPoint> points =
+      conv::stampedPointsFromPath(pathMessage("map_offset"), to_fixed, kMaxPosition);
+  ASSERT_EQ(points.size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(points[i].stamp, (10 + i) * 1000000000LL);
+    EXPECT_NEAR(points[i].position.x(), 1.0 - 2.0 * i, 1e-14);
+    EXPECT_NEAR(points[i].position.y(), i, 1e-14);
+  }
+}
+
+TEST(PathConversion, RejectsAPoseInAnotherFrameAndBadPositions) {
+  const Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
+  nav_msgs::Path other_frame = pathMessage("world");
+  other_frame.poses[1].header.frame_id = "odom";
+  EXPECT_INVALID_ARGUMENT(conv::stampedPointsFromPath(other_frame, identity, kMaxPosition),
+                          "poses[1]", "'odom'", "'world'");
+  nav_msgs::Path not_finite = pathMessage("world");
+  not_finite.poses[2].pose.position.x = kNaN;
+  EXPECT_INVALID_ARGUMENT(conv::stampedPointsFromPath(not_finite, identity, kMaxPosition),
+                          "poses[2].pose.position.x", "nan");
+  nav_msgs::Path far = pathMessage("world");
+  far.poses[0].pose.position.y = 1e300;
+  EXPECT_INVALID_ARGUMENT(conv::stampedPointsFromPath(far, identity, kMaxPosition),
+                          "poses[0].pose.position.y", "1000");
+  geometry_msgs::Transform bad;
+  bad.rotation.w = 2.0;
+  EXPECT_INVALID_ARGUMENT(conv::fromTransform(bad, "transform from 'x'"), "transform from 'x'.rotation",
+                          "norm");
+}
+
 TEST(Visualisation, SampledPathClosesOnTheSurface) {
   const sr::terrain::CosineSurface surface(0.2, 2.0);
   const sr::terrain::CirclePath circle(2.0, 0.05);

@@ -51,7 +51,7 @@ TEST(ReferencePaths, CircleIsEq60WithItsSineRestored) {
     const Eigen::Vector2d v_fd = (circle.position(t + 1e-5) - circle.position(t - 1e-5)) / 2e-5;
     EXPECT_LE((circle.velocity(t) - v_fd).norm(), 1e-9);
   }
-  EXPECT_NEAR(circle.period(), 2 * kPi / 0.05, 1e-12);
+  EXPECT_NEAR(circle.duration(), 2 * kPi / 0.05, 1e-12);
 }
 
 TEST(ReferencePaths, DiamondVisitsItsVerticesCounterClockwiseAtConstantSpeed) {
@@ -61,7 +61,7 @@ TEST(ReferencePaths, DiamondVisitsItsVerticesCounterClockwiseAtConstantSpeed) {
   for (int k = 0; k < 5; ++k) {
     EXPECT_LE((diamond.position(k * edge_time) - vertices[k]).norm(), 1e-12) << "vertex " << k;
   }
-  EXPECT_NEAR(diamond.period(), 4 * edge_time, 1e-12);
+  EXPECT_NEAR(diamond.duration(), 4 * edge_time, 1e-12);
   for (double t : {1.0, 20.0, 30.0, 50.0, 90.0, 111.0}) {
     const Eigen::Vector2d v_fd = (diamond.position(t + 1e-4) - diamond.position(t - 1e-4)) / 2e-4;
     EXPECT_LE((diamond.velocity(t) - v_fd).norm(), 1e-9) << "t " << t;

@@ -167,6 +167,13 @@ PlanarTwist planarTwist(const geometry_msgs::Twist& twist, double max_magnitude)
   return result;
 }
 
+Eigen::Isometry3d fromTransform(const geometry_msgs::Transform& transform, const std::string& field) {
+  Eigen::Isometry3d isometry = Eigen::Isometry3d::Identity();
+  isometry.translation() = fromVector3(transform.translation, field + ".translation");
+  isometry.linear() = fromQuaternion(transform.rotation, field + ".rotation").toRotationMatrix();
+  return isometry;
+}
+
 Eigen::Quaterniond fromQuaternion(const geometry_msgs::Quaternion& q, const std::string& field,
                                   double tolerance) {
   const Eigen::Quaterniond value(q.w, q.x, q.y, q.z);

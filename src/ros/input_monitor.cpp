@@ -15,6 +15,8 @@ namespace {
 // Wall time: the rate of bad messages is the sender's, and a stray /clock must not reset it.
 double wallSeconds() { return ros::WallTime::now().toSec(); }
 
+}  // namespace
+
 unsigned char statusLevel(HealthLevel level) {
   using diagnostic_msgs::DiagnosticStatus;
   switch (level) {
@@ -24,8 +26,6 @@ unsigned char statusLevel(HealthLevel level) {
   }
   return DiagnosticStatus::ERROR;
 }
-
-}  // namespace
 
 std::string stampProblem(const ros::Time& stamp, const ros::Time& now, double tolerance) {
   if (stamp.isZero()) return "stamp is 0 (unset)";

@@ -61,6 +61,7 @@ void LockstepParticipant::sendJoin(const ros::WallTimerEvent&) {
   if (!last_request_wall_.isZero() &&
       (ros::WallTime::now() - last_request_wall_).toSec() < rejoin_after_)
     return;
+  if (ready_ && !ready_()) return;
   // Joined before its inputs are connected, it would wait for messages that were never sent.
   // A subscriber sees a publisher before that publisher has finished its side of the
   // connection and sends to it, so it waits a second more.

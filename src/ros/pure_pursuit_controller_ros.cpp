@@ -7,7 +7,11 @@
 #include <nav_msgs/Path.h>
 #include <sensor_msgs/JointState.h>
 
+#include <tf2/exceptions.h>
+
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "spherical_robots/TrackingError.h"
@@ -18,7 +22,10 @@
 namespace spherical_robots {
 namespace {
 
-constexpr int kDesiredPathSamples = 400;
+constexpr int kDesiredPathSamples = 400;      // a built-in path on desired_path
+constexpr int kSamplesPerPathPoint = 4;       // a received path's, up to
+constexpr int kMaxDesiredPathSamples = 10000;
+constexpr double kPathTfRetryPeriod = 0.05;   // [s] of wall time
 
 }  // namespace
 
@@ -37,6 +44,8 @@ PurePursuitControllerParameters loadPurePursuitControllerParameters(
   p.mode = config::parsedText(node, "mode", "tracking", P::modeFromString);
   p.law = config::parsedText(node, "law", "smooth", terrain::pursuitLawFromString);
   p.path = node.text("path").value_or(p.path);
+  p.untimed_speed = config::positiveNumber(node, "untimed_speed", p.untimed_speed);
+  p.path_tf_timeout = config::positiveNumber(node, "path_tf_timeout", p.path_tf_timeout);
   p.rate = config::positiveNumber(node, "rate", p.rate);
   p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);
   p.max_position = config::positiveNumber(node, "max_position", p.max_position);
@@ -62,20 +71,34 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
   state_sub_ = nh.subscribe("terrain_state", kLoopQueueSize, &PurePursuitControllerRos::onTerrainState, this);
   if (parameters_.mode == Mode::Tracking) {
     surface_ = config::makeSurface(terrain_config.surface);
-    try {
-      path_ = config::makePath(parameters_.path, terrain_config);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument("parameter " + pnh.resolveName("path") + " = '" +
-                                  parameters_.path + "': " + e.what());
-    }
-    tracker_ = std::make_unique<terrain::PathTracker>(*controller_, *path_, *surface_);
     error_pub_ = step_publications_.advertise<spherical_robots::TrackingError>(nh, "tracking_error");
     target_pub_ = step_publications_.advertise<geometry_msgs::PointStamped>(nh, "target");
     desired_path_pub_ = nh.advertise<nav_msgs::Path>("desired_path", 1, true);
-    desired_path_pub_.publish(conversions::sampledPath(*path_, *surface_, kDesiredPathSamples,
-                                                       kWorldFrame, ros::Time::now()));
-    ROS_INFO_STREAM("Tracking " << path_->describe() << " on " << surface_->describe() << " with a "
-                                << terrain::toString(parameters_.robot_type) << " sphere, R = " << radius_ << " m");
+    if (parameters_.path != PurePursuitControllerParameters::kPathFromTopic) {
+      try {
+        path_ = config::makePath(parameters_.path, terrain_config);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("parameter " + pnh.resolveName("path") + " = '" +
+                                    parameters_.path + "': " + e.what() + ", or " +
+                                    PurePursuitControllerParameters::kPathFromTopic +
+                                    " to follow only the paths received on " +
+                                    nh.resolveName("path"));
+      }
+      path_origin_ = pnh.resolveName("path") + " = " + parameters_.path;
+      tracker_ = std::make_unique<terrain::PathTracker>(*controller_, *path_, *surface_);
+      publishDesiredPath(kDesiredPathSamples);
+    }
+    tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_, nh);
+    path_tf_timer_ = nh.createWallTimer(ros::WallDuration(kPathTfRetryPeriod),
+                                        [this](const ros::WallTimerEvent&) { resolvePendingPath(); },
+                                        false, false);
+    // Latched, the last one wins: a new path replaces the one followed.
+    path_sub_ = nh.subscribe("path", 1, &PurePursuitControllerRos::onPath, this);
+    ROS_INFO_STREAM("Tracking " << (path_ ? path_->describe() : "nothing until a path arrives")
+                                << " (a nav_msgs/Path on " << path_sub_.getTopic()
+                                << " replaces it) on " << surface_->describe() << " with a "
+                                << terrain::toString(parameters_.robot_type)
+                                << " sphere, R = " << radius_ << " m");
   } else {
     teleop_mapping_ = std::make_unique<terrain::TeleopMapping>(
         parameters_.robot_type, radius_, terrain_config.tilt_limit, parameters_.teleop_tilt_gain);
@@ -93,6 +116,9 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
         nh, pnh, std::vector<ros::Subscriber>{state_sub_}, [this, period](const ros::Time& now) {
           return LockstepParticipant::Done{control(now), now + ros::Duration(period)};
         });
+    // Time starts with a path to follow (~path topic: once one has arrived), so that a path sent
+    // before the start is followed from the first step, as a built-in one.
+    if (parameters_.mode == Mode::Tracking) lockstep_->joinOnlyWhen([this] { return path_ != nullptr; });
     return;
   }
   timer_ = nh.createTimer(ros::Duration(period), &PurePursuitControllerRos::onTimer, this);
@@ -127,6 +153,97 @@ void PurePursuitControllerRos::onTerrainState(const spherical_robots::TerrainSta
     ROS_WARN_STREAM_THROTTLE(1.0, "Ignoring terrain_state: " << e.what());
   }
   if (lockstep_) lockstep_->received(state_sub_.getTopic(), msg.header.stamp);
+}
+
+void PurePursuitControllerRos::onPath(const ros::MessageEvent<const nav_msgs::Path>& event) {
+  // The last one wins: a path still waiting for tf gives way to a newer one, and is counted as
+  // refused (a sender streaming paths in an unknown frame shows on /diagnostics).
+  if (pending_path_) {
+    refusePath("replaced by a newer path while waiting for a transform from frame '" +
+               pending_path_->msg->header.frame_id + "'");
+  }
+  pending_path_ = PendingPath{event.getConstMessage(), event.getPublisherName(), now(),
+                              ros::WallTime::now()};
+  resolvePendingPath();
+}
+
+void PurePursuitControllerRos::resolvePendingPath() {
+  if (!pending_path_) return;
+  const nav_msgs::Path& msg = *pending_path_->msg;
+  const std::string& frame = msg.header.frame_id;
+  try {
+    if (frame.empty()) {
+      throw std::invalid_argument("header.frame_id is empty; the controller's frame is '" +
+                                  kWorldFrame + "'");
+    }
+    Eigen::Isometry3d to_world = Eigen::Isometry3d::Identity();
+    if (frame != kWorldFrame) {
+      std::string tf_error;
+      if (!tf_buffer_.canTransform(kWorldFrame, frame, msg.header.stamp, &tf_error)) {
+        const double waited = (ros::WallTime::now() - pending_path_->arrived).toSec();
+        if (waited < parameters_.path_tf_timeout) {
+          path_tf_timer_.start();
+          return;
+        }
+        std::ostringstream problem;
+        problem << "no transform from frame '" << frame << "' to '" << kWorldFrame << "' at "
+                << msg.header.stamp.toSec() << " s after " << waited << " s (path_tf_timeout "
+                << parameters_.path_tf_timeout << " s): " << tf_error;
+        throw std::invalid_argument(problem.str());
+      }
+      to_world = conversions::fromTransform(
+          tf_buffer_.lookupTransform(kWorldFrame, frame, msg.header.stamp).transform,
+          "transform from '" + frame + "'");
+    }
+    auto path = std::make_unique<terrain::SampledPath>(terrain::SampledPath::fromStamped(
+        conversions::stampedPointsFromPath(msg, to_world, parameters_.max_position),
+        parameters_.untimed_speed));
+    follow(std::move(path), msg.poses.front().header.stamp, pending_path_->received,
+           path_sub_.getTopic() + " from " + pending_path_->publisher + " in frame '" + frame + "'");
+  } catch (const std::invalid_argument& e) {
+    refusePath(e.what());
+  } catch (const tf2::TransformException& e) {
+    refusePath(std::string("tf: ") + e.what());
+  }
+  pending_path_.reset();
+  path_tf_timer_.stop();
+}
+
+void PurePursuitControllerRos::follow(std::unique_ptr<terrain::SampledPath> path,
+                                      const ros::Time& first_stamp, const ros::Time& received,
+                                      const std::string& origin) {
+  if (!tracker_) tracker_ = std::make_unique<terrain::PathTracker>(*controller_, *path, *surface_);
+  tracker_->follow(*path, nanosecondsOf(first_stamp), nanosecondsOf(received));
+  const int samples = static_cast<int>(
+      std::min<std::size_t>(kMaxDesiredPathSamples, kSamplesPerPathPoint * path->size()));
+  path_ = std::move(path);
+  path_origin_ = origin;
+  ++paths_accepted_;
+  path_health_.accepted(ros::WallTime::now().toSec());
+  publishDesiredPath(std::max(samples, kDesiredPathSamples));
+  ROS_INFO_STREAM("Following a " << path_->describe() << " received on " << origin
+                                  << (first_stamp > received ? ", from its first stamp " : ", from ")
+                                  << (first_stamp > received ? first_stamp.toSec() : received.toSec())
+                                  << " s");
+  updater_.force_update();
+}
+
+void PurePursuitControllerRos::refusePath(const std::string& reason) {
+  const nav_msgs::Path& msg = *pending_path_->msg;
+  ++paths_refused_;
+  path_health_.rejected(ros::WallTime::now().toSec(), reason);
+  ROS_ERROR_STREAM("Refusing the path on " << path_sub_.getTopic() << " from "
+                                           << pending_path_->publisher << " (" << msg.poses.size()
+                                           << " poses, frame '" << msg.header.frame_id
+                                           << "'): " << reason << "; "
+                                           << (path_ ? "keeping the " + path_->describe()
+                                                     : std::string("no path: the robot stays at rest")));
+  updater_.force_update();
+}
+
+void PurePursuitControllerRos::publishDesiredPath(int samples) {
+  desired_path_pub_.publish(
+      conversions::sampledPath(*path_, *surface_, samples, kWorldFrame, now()));
 }
 
 void PurePursuitControllerRos::onCmdVel(const geometry_msgs::Twist& msg) {
@@ -177,7 +294,7 @@ std::vector<std::string> PurePursuitControllerRos::control(const ros::Time& now)
 }
 
 terrain::DriveRates PurePursuitControllerRos::track(const ros::Time& now) {
-  if (!geometry_ || !input_.fresh(now)) return {};
+  if (!tracker_ || !geometry_ || !input_.fresh(now)) return {};
   // Throws on a non-finite error or command; control() commands zero instead.
   const terrain::TrackingCommand tracked =
       tracker_->command(nanosecondsOf(now), *geometry_, tilt_);
@@ -205,9 +322,12 @@ terrain::DriveRates PurePursuitControllerRos::teleop() {
 
 void PurePursuitControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   status.summary(diagnostic_msgs::DiagnosticStatus::OK,
-                 parameters_.mode == Mode::Tracking ? "tracking " + path_->describe() : "teleop");
+                 parameters_.mode == Mode::Tracking
+                     ? (path_ ? "tracking " + path_->describe() : "no path to track: at rest")
+                     : "teleop");
   status.add("robot type", terrain::toString(parameters_.robot_type));
   if (parameters_.mode == Mode::Tracking) {
+    reportPath(status);
     status.add("|e_t| [m]", error_.norm);
     status.add("zeta [rad]", error_.zeta);
   }
@@ -216,6 +336,28 @@ void PurePursuitControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrap
   status.add("turn rate set-point [rad/s]", command_.turn_rate);
   status.add("command failures", failures_);
   input_.report(status, now());
+}
+
+void PurePursuitControllerRos::reportPath(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  using diagnostic_msgs::DiagnosticStatus;
+  const std::string& topic = path_sub_.getTopic();
+  status.add("path", path_ ? path_->describe() : "none");
+  status.add("path from", path_ ? path_origin_ : "nothing yet: waiting on " + topic);
+  status.add(topic + " accepted", paths_accepted_);
+  status.add(topic + " refused", paths_refused_);
+  if (!path_health_.lastReason().empty()) status.add(topic + " last refusal", path_health_.lastReason());
+  if (!path_) {
+    // At rest: with a refused path that is an error of the sender's, otherwise the wait for one.
+    status.mergeSummary(paths_refused_ > 0 ? DiagnosticStatus::ERROR : DiagnosticStatus::WARN,
+                        paths_refused_ > 0 ? "path refused, none to follow: " + path_health_.lastReason()
+                                           : "waiting for a path on " + topic);
+    return;
+  }
+  const HealthLevel level = path_health_.level(ros::WallTime::now().toSec());
+  if (level != HealthLevel::kOk) {
+    status.mergeSummary(statusLevel(level), "path refused on " + topic + " (keeping the last good one): " +
+                                                path_health_.lastReason());
+  }
 }
 
 }  // namespace spherical_robots

@@ -96,6 +96,25 @@ spherical_robots::TrackingError toTrackingErrorMsg(const terrain::TrackingError&
   return msg;
 }
 
+std::vector<terrain::StampedPoint> stampedPointsFromPath(const nav_msgs::Path& msg,
+                                                         const Eigen::Isometry3d& to_fixed,
+                                                         double max_position) {
+  std::vector<terrain::StampedPoint> points;
+  points.reserve(msg.poses.size());
+  for (std::size_t i = 0; i < msg.poses.size(); ++i) {
+    const geometry_msgs::PoseStamped& pose = msg.poses[i];
+    const std::string field = "poses[" + std::to_string(i) + "]";
+    if (!pose.header.frame_id.empty() && pose.header.frame_id != msg.header.frame_id) {
+      throw std::invalid_argument(field + " is in frame '" + pose.header.frame_id +
+                                  "', the path in '" + msg.header.frame_id + "'");
+    }
+    const Eigen::Vector3d position =
+        to_fixed * boundedPoint(pose.pose.position, field + ".pose.position", max_position);
+    points.push_back({nanosecondsOf(pose.header.stamp), position.head<2>()});
+  }
+  return points;
+}
+
 nav_msgs::Path sampledPath(const terrain::ReferencePath& path, const terrain::Surface& surface,
                            int samples, const std::string& frame, const ros::Time& stamp) {
   if (samples < 2) {
@@ -104,9 +123,9 @@ nav_msgs::Path sampledPath(const terrain::ReferencePath& path, const terrain::Su
   nav_msgs::Path msg;
   msg.header.stamp = stamp;
   msg.header.frame_id = frame;
-  const double period = path.period();
+  const double duration = path.duration();
   for (int i = 0; i < samples; ++i) {
-    const double t = period * i / (samples - 1);
+    const double t = duration * i / (samples - 1);
     const terrain::DesiredPoint point = terrain::liftOntoSurface(path, surface, t);
     msg.poses.push_back(toPoseStamped(point.position, Eigen::Quaterniond::Identity(), frame, stamp));
   }

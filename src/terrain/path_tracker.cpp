@@ -8,7 +8,13 @@ namespace spherical_robots::terrain {
 
 PathTracker::PathTracker(const PursuitController& law, const ReferencePath& path,
                          const Surface& surface)
-    : law_(law), path_(path), surface_(surface) {}
+    : law_(law), path_(&path), surface_(surface) {}
+
+void PathTracker::follow(const ReferencePath& path, Nanoseconds first_stamp, Nanoseconds received) {
+  path_ = &path;
+  started_ = first_stamp > received;
+  start_ = started_ ? first_stamp : 0;
+}
 
 TrackingCommand PathTracker::command(Nanoseconds now, const ContactGeometry& geometry,
                                      double tilt) {
@@ -17,8 +23,13 @@ TrackingCommand PathTracker::command(Nanoseconds now, const ContactGeometry& geo
     start_ = now;
   }
   TrackingCommand result;
-  result.desired =
-      liftOntoSurface(path_, surface_, stampSeconds(now - start_), law_.velocityWindow());
+  if (now < start_) {  // a path whose first stamp is still ahead: wait at its start
+    result.desired = liftOntoSurface(*path_, surface_, 0.0);
+    result.desired.velocity.setZero();
+  } else {
+    result.desired =
+        liftOntoSurface(*path_, surface_, stampSeconds(now - start_), law_.velocityWindow());
+  }
   result.error = trackingError(geometry, result.desired.position);
   result.rates = law_.command(geometry, tilt, result.error, result.desired.velocity);
   // Nothing non-finite leaves the controller.

@@ -40,7 +40,7 @@ Eigen::Vector2d CirclePath::meanVelocity(double t, double window) const {
   return at(t).velocity * (std::sin(half_turn) / half_turn);
 }
 
-double CirclePath::period() const { return 2.0 * M_PI / std::abs(angular_rate_); }
+double CirclePath::duration() const { return 2.0 * M_PI / std::abs(angular_rate_); }
 
 std::string CirclePath::describe() const {
   std::ostringstream text;
@@ -86,7 +86,7 @@ PathPoint DiamondPath::at(double t) const {
   return point;
 }
 
-double DiamondPath::period() const { return 4.0 * std::sqrt(2.0) * half_diagonal_ / speed_; }
+double DiamondPath::duration() const { return 4.0 * std::sqrt(2.0) * half_diagonal_ / speed_; }
 
 std::string DiamondPath::describe() const {
   std::ostringstream text;

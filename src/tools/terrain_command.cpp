@@ -11,6 +11,7 @@
 #include "spherical_robots/config/robot_description.hpp"
 #include "spherical_robots/config/terrain_config.hpp"
 #include "spherical_robots/config/yaml_parameter_source.hpp"
+#include "path_file.hpp"
 
 namespace spherical_robots::sphere_sim {
 namespace {
@@ -28,7 +29,14 @@ const char* const kColumns[] = {"t",  "x0",     "y0",        "z0",           "xd
 TerrainRunSettings settingsFrom(const ParsedOptions& options) {
   TerrainRunSettings settings;
   settings.robot = terrain::robotTypeFromString(options.text("robot"));
-  settings.path = options.text("path");
+  if (options.given("path") == options.given("path-file"))
+    throw UsageError("give either --path NAME or --path-file FILE");
+  if (options.given("path")) settings.path = options.text("path");
+  if (options.given("path-file")) settings.path_file = options.text("path-file");
+  if (options.given("speed")) {
+    if (settings.path_file.empty()) throw UsageError("--speed needs --path-file (an x,y file)");
+    settings.speed = options.number("speed");
+  }
   settings.model = terrain::contactModelFromString(options.text("model"));
   settings.law = terrain::pursuitLawFromString(options.text("law"));
   settings.loop = options.text("loop") == "sampled" ? TerrainLoop::Sampled : TerrainLoop::Continuous;
@@ -83,6 +91,13 @@ config/roller.yaml loaded over config/terrain.yaml, the controller's 2R rates tu
 rollers' motor rates (friction_drive_controller) and the motors' measured rates into the
 sphere's (friction_drive_sim, with slip) on the way.
 
+--path-file FILE: the path is the cubic spline in time through the file's points (C2, so the
+velocity the laws feed forward is continuous; not-a-knot ends), the same interpolation
+(terrain::SampledPath) as pure_pursuit_controller gives a nav_msgs/Path it receives. A path
+whose last point is its first is closed: periodic, it repeats. An open path ends: the desired
+point then holds the last point at rest. A bad file (a cell that is not a number, a non-finite
+value, a time not after the one before, fewer than 2 points) is rejected naming its line.
+
 CSV columns (SI units, radians; one row every 1/log-rate s from t = 0 through the duration):
   t             time [s]
   x0,y0,z0      contact point P0 [m]; z0 = f(x0, y0) on the surface
@@ -102,10 +117,12 @@ stdout: one line: robot, path, model, law, the first logged time with |e_t| < 0.
 none) and the mean and max |e_t| over the logged rows with t >= 40 s.
 
 Exit status: 0 success; 2 usage error (unknown option, unknown robot/path/model/law, malformed
-number, missing option); 4 invalid input (non-finite or out-of-range number, duration or log
-period not a whole number of steps, unreadable config, a radius that breaks single-point
-contact, a run that diverges or leaves the height map): one-line error on stderr and no output
-file. An 8-bit height map is smoothed, with a warning on stderr.
+number, missing option, neither or both of --path and --path-file, --speed without an x,y
+--path-file or missing with one); 4 invalid input (non-finite or out-of-range number, duration
+or log period not a whole number of steps, unreadable config, a bad --path-file, named with its
+line, a radius that breaks single-point contact, a run that diverges or leaves the height map):
+one-line error on stderr and no output file. An 8-bit height map is smoothed, with a warning on
+stderr.
 )";
 
 }  // namespace
@@ -157,7 +174,13 @@ TerrainRun::TerrainRun(const TerrainRunSettings& settings) : settings_(settings)
   loading.base_directory = settings.config_dir;
   loading.warn = [](const std::string& warning) { std::cerr << "warning: " << warning << '\n'; };
   surface_ = config::makeSurface(surface, loading);
-  path_ = config::makePath(settings.path, scenario);
+  if (settings.path_file.empty()) {
+    path_ = config::makePath(settings.path, scenario);
+  } else {
+    if (settings.speed && !(*settings.speed > 0.0))
+      throw InvalidInput("--speed must be > 0 m/s, got " + formatNumber(*settings.speed));
+    path_ = std::make_unique<terrain::SampledPath>(readPathFile(settings.path_file, settings.speed));
+  }
   kinematics_ = std::make_unique<terrain::TerrainKinematics>(*surface_, settings.robot, radius,
                                                              settings.model, scenario.tilt_limit);
   controller_ = config::makePursuitController(settings.law, settings.robot, scenario, radius);
@@ -222,7 +245,8 @@ terrain::TrackingSummary TerrainRun::simulate(std::ostream* csv) const {
 
 std::string TerrainRun::describe(const terrain::TrackingSummary& summary) const {
   std::ostringstream line;
-  line << "robot " << terrain::toString(settings_.robot) << ", path " << settings_.path
+  line << "robot " << terrain::toString(settings_.robot) << ", path "
+       << (settings_.path_file.empty() ? settings_.path : settings_.path_file)
        << ", model " << terrain::toString(settings_.model) << ", law "
        << terrain::toString(settings_.law) << ": |e_t| < " << summary.threshold()
        << " m ";
@@ -259,10 +283,20 @@ Subcommand terrainCommand() {
       {"path",
        "NAME",
        "Reference path: circle (radius and rate from config/terrain.yaml, eq 60 corrected) or\n"
-       "diamond (counter-clockwise from (d, 0) at constant XY speed).",
+       "diamond (counter-clockwise from (d, 0) at constant XY speed). This or --path-file.",
        "",
-       true,
+       false,
        {"circle", "diamond"}},
+      optionalOption(
+          "path-file", "FILE",
+          "A path of your own instead of --path: a CSV file of rows t,x,y (a timed path, t [s]\n"
+          "strictly increasing from the first row's) or x,y (untimed, followed at --speed),\n"
+          "x and y [m], with an optional header row naming the columns; lines that are empty or\n"
+          "start with # are skipped. Interpolated as pure_pursuit_controller interpolates a\n"
+          "received nav_msgs/Path (see below)."),
+      optionalOption("speed", "M/S",
+                     "With an x,y --path-file: the speed [m/s] > 0 along it (its points timed by\n"
+                     "the lengths between them)."),
       {"model",
        "NAME",
        "Contact model: paper (the rates move the contact point, eq 28) or rolling (they are the\n"

@@ -3,6 +3,7 @@
 // terrain of Moazami et al. 2019, section 6, written as CSV.
 
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -24,7 +25,9 @@ enum class TerrainLoop { Continuous, Sampled };
 /// A terrain run as the command line describes it.
 struct TerrainRunSettings {
   terrain::RobotType robot = terrain::RobotType::ThreeAxisRolling;
-  std::string path = "circle";  ///< "circle" | "diamond"
+  std::string path = "circle";  ///< "circle" | "diamond"; unused with path_file
+  std::string path_file;        ///< a CSV path (path_file.hpp) instead of path
+  std::optional<double> speed;  ///< [m/s] along an x,y path_file
   terrain::ContactModel model = terrain::ContactModel::Paper;
   /// The paper's law by default: the subcommand reproduces the paper.
   terrain::PursuitLaw law = terrain::PursuitLaw::Paper;
@@ -46,7 +49,7 @@ struct TerrainRunSettings {
 class TerrainRun {
  public:
   /// @throw InvalidInput naming the option whose value is out of range or misaligned with --dt,
-  /// or the file that cannot be read; std::invalid_argument from the core on a bad scenario
+  /// or the file that cannot be read (a path file: its bad line); std::invalid_argument from the core on a bad scenario
   /// (e.g. a radius that breaks single-point contact).
   explicit TerrainRun(const TerrainRunSettings& settings);
   TerrainRun(const TerrainRun&) = delete;

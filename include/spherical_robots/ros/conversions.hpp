@@ -60,6 +60,10 @@ Eigen::Vector3d boundedPoint(const geometry_msgs::Point& p, const std::string& f
 Eigen::Vector3d boundedVector3(const geometry_msgs::Vector3& v, const std::string& field,
                                double max_magnitude);
 
+/// The transform as an isometry (a point in the child frame -> the same point in the parent's).
+/// @throw std::invalid_argument naming `field` as fromVector3 and fromQuaternion.
+Eigen::Isometry3d fromTransform(const geometry_msgs::Transform& transform, const std::string& field);
+
 geometry_msgs::TransformStamped toTransform(const Eigen::Vector3d& translation,
                                             const Eigen::Quaterniond& rotation,
                                             const std::string& parent, const std::string& child,

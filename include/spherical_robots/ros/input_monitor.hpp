@@ -18,6 +18,9 @@ namespace spherical_robots {
 /// `tolerance` [s] ahead of or behind the clock; empty if it can.
 std::string stampProblem(const ros::Time& stamp, const ros::Time& now, double tolerance);
 
+/// The diagnostic_msgs/DiagnosticStatus level of a health level.
+unsigned char statusLevel(HealthLevel level);
+
 class InputMonitor {
  public:
   /// @param topic resolved name for logs and diagnostics, @param timeout [s] > 0 after which the

@@ -55,6 +55,9 @@ class LockstepParticipant {
   LockstepParticipant(ros::NodeHandle nh, const ros::NodeHandle& pnh,
                       std::vector<ros::Subscriber> subscriptions, Work work, double rejoin_after = 1.0);
 
+  /// Asks to join only while ready() also holds (e.g. a controller that has something to follow),
+  /// so that time starts with the node able to work.
+  void joinOnlyWhen(std::function<bool()> ready) { ready_ = std::move(ready); }
   /// A message stamped `stamp` arrived on `topic` (call from the subscription's callback, after
   /// the node took the message in).
   void received(const std::string& topic, const ros::Time& stamp);
@@ -73,6 +76,7 @@ class LockstepParticipant {
   std::vector<ros::Subscriber> subscriptions_;
   LockstepInputs inputs_;
   Work work_;
+  std::function<bool()> ready_;
   double rejoin_after_;
   std::optional<ros::Time> pending_;
   ros::Time now_;

@@ -4,7 +4,10 @@
 
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/Twist.h>
+#include <nav_msgs/Path.h>
 #include <ros/ros.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
 
 #include <memory>
 #include <optional>
@@ -15,11 +18,13 @@
 #include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/ros/terrain_conversions.hpp"
 #include "spherical_robots/core/clock_jump.hpp"
+#include "spherical_robots/core/input_health.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/terrain/path_tracker.hpp"
 #include "spherical_robots/terrain/pursuit_law.hpp"
 #include "spherical_robots/terrain/pure_pursuit.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
+#include "spherical_robots/terrain/sampled_path.hpp"
 #include "spherical_robots/terrain/surface.hpp"
 
 #include "spherical_robots/ros/lockstep_participant.hpp"
@@ -38,7 +43,13 @@ struct PurePursuitControllerParameters {
   terrain::RobotType robot_type = terrain::RobotType::ThreeAxisRolling;
   Mode mode = Mode::Tracking;
   terrain::PursuitLaw law = terrain::PursuitLaw::Smooth;
-  std::string path = "circle";     ///< a path of config/terrain.yaml (tracking)
+  /// A path of config/terrain.yaml (tracking), or kPathFromTopic: none until one arrives on
+  /// `path`. A nav_msgs/Path received on `path` replaces whichever is followed.
+  std::string path = "circle";
+  static inline const std::string kPathFromTopic = "topic";
+  double untimed_speed = 0.1;      ///< [m/s] along a received path whose stamps are all equal
+  /// [s] of wall time a received path in another frame waits for tf before it is refused
+  double path_tf_timeout = 1.0;
   double rate = 50.0;              ///< [Hz] of actuators/command
   /// [s] an older terrain_state (ROS time) or cmd_vel (wall time) is stale: the command is zero.
   double input_timeout = 0.5;
@@ -53,8 +64,9 @@ struct PurePursuitControllerParameters {
 PurePursuitControllerParameters loadPurePursuitControllerParameters(
     const config::ParameterSource& node);
 
-/// The terrain stack's controller: tracks a path of config/terrain.yaml with a pursuit law, or
-/// maps a person's cmd_vel onto the robot type's drive (docs/nodes.md, "pure_pursuit_controller").
+/// The terrain stack's controller: tracks a path of config/terrain.yaml or a received
+/// nav_msgs/Path with a pursuit law, or maps a person's cmd_vel onto the robot type's drive
+/// (docs/nodes.md, "pure_pursuit_controller").
 class PurePursuitControllerRos {
  public:
   /// @throw std::invalid_argument on a bad parameter, URDF or terrain configuration.
@@ -64,6 +76,15 @@ class PurePursuitControllerRos {
   using Mode = PurePursuitControllerParameters::Mode;
 
   void onTerrainState(const spherical_robots::TerrainState& msg);
+  void onPath(const ros::MessageEvent<const nav_msgs::Path>& event);
+  /// Takes in the path that arrived last, or refuses it: at once, or once its frame has a
+  /// transform to the fixed frame (waiting up to ~path_tf_timeout of wall time for tf).
+  void resolvePendingPath();
+  /// Follows `path` (received at `received`, its first pose stamped `first_stamp`), from `origin`.
+  void follow(std::unique_ptr<terrain::SampledPath> path, const ros::Time& first_stamp,
+              const ros::Time& received, const std::string& origin);
+  void refusePath(const std::string& reason);
+  void publishDesiredPath(int samples);
   void onCmdVel(const geometry_msgs::Twist& msg);
   void onTimer(const ros::TimerEvent& event);
   /// The periodic work at `now` (a timer's or a lock-step request's); returns what it published.
@@ -77,13 +98,31 @@ class PurePursuitControllerRos {
   /// Logs once per field that cmd_vel asks for something this robot cannot do.
   void warnIgnoredOnce(const std::vector<std::string>& fields);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
+  void reportPath(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  /// A received path waiting for its frame's transform.
+  struct PendingPath {
+    nav_msgs::Path::ConstPtr msg;
+    std::string publisher;
+    ros::Time received;            ///< the node's time (now()) when it arrived
+    ros::WallTime arrived;
+  };
 
   PurePursuitControllerParameters parameters_;
   double radius_;
   std::unique_ptr<terrain::Surface> surface_;
-  std::unique_ptr<terrain::ReferencePath> path_;
   std::unique_ptr<terrain::PursuitController> controller_;
-  std::unique_ptr<terrain::PathTracker> tracker_;  ///< tracking mode
+  // Tracking mode: the path followed (null with ~path topic until one arrives) and its tracker.
+  std::unique_ptr<terrain::ReferencePath> path_;
+  std::string path_origin_;  ///< where path_ came from, for the log and /diagnostics
+  std::unique_ptr<terrain::PathTracker> tracker_;
+  std::optional<PendingPath> pending_path_;
+  InputHealth path_health_;  ///< refusals of received paths, on wall time
+  unsigned long paths_accepted_ = 0;
+  unsigned long paths_refused_ = 0;
+  tf2_ros::Buffer tf_buffer_;
+  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  ros::WallTimer path_tf_timer_;  ///< retries a pending path while it waits for tf
 
   std::optional<terrain::ContactGeometry> geometry_;  ///< from the last good terrain_state
   double tilt_ = 0.0;                                 ///< RS phi from the last good terrain_state
@@ -99,6 +138,7 @@ class PurePursuitControllerRos {
   ros::WallTime last_cmd_vel_wall_;  ///< arrival of the last good cmd_vel
   ros::Subscriber state_sub_;
   ros::Subscriber cmd_vel_sub_;
+  ros::Subscriber path_sub_;
   StepPublications step_publications_;
   LoopPublisher command_pub_;
   LoopPublisher error_pub_;

@@ -14,6 +14,7 @@
 #include "spherical_robots/terrain/pure_pursuit.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/robot_type.hpp"
+#include "spherical_robots/terrain/sampled_path.hpp"
 #include "spherical_robots/terrain/surface.hpp"
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
 
@@ -51,9 +52,19 @@ spherical_robots::TrackingError toTrackingErrorMsg(const terrain::TrackingError&
                                                    const terrain::DesiredPoint& desired,
                                                    const std::string& frame, const ros::Time& stamp);
 
+/// The poses of a path as the core's stamped points in the fixed frame: each position mapped by
+/// `to_fixed` (the path's frame in the fixed frame) and its (x, y) kept; orientations and heights
+/// play no part (the path is lifted onto the surface, the heading follows it).
+/// @throw std::invalid_argument naming the pose whose frame_id is neither empty nor the path's,
+/// or whose position is not finite or has a coordinate beyond max_position [m].
+std::vector<terrain::StampedPoint> stampedPointsFromPath(const nav_msgs::Path& msg,
+                                                         const Eigen::Isometry3d& to_fixed,
+                                                         double max_position);
+
 // --- Visualisation ------------------------------------------------------------------------------
 
-/// One period of the path lifted onto the surface, `samples` poses (closing the loop).
+/// The path over its duration() lifted onto the surface, `samples` poses (one lap of a closed
+/// path, closing the loop).
 /// @throw std::invalid_argument if samples < 2.
 nav_msgs::Path sampledPath(const terrain::ReferencePath& path, const terrain::Surface& surface,
                            int samples, const std::string& frame, const ros::Time& stamp);

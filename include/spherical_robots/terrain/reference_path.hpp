@@ -28,8 +28,9 @@ class ReferencePath {
   /// The mean velocity [m/s] over [t - window/2, t + window/2], window [s] > 0: the chord
   /// (position(t + window/2) - position(t - window/2)) / window.
   virtual Eigen::Vector2d meanVelocity(double t, double window) const;
-  /// Time [s] after which the path repeats.
-  virtual double period() const = 0;
+  /// The span [s] desired_path shows: one lap of a path that repeats (it repeats after that),
+  /// the whole of one that ends.
+  virtual double duration() const = 0;
   virtual std::string describe() const = 0;
 };
 
@@ -41,7 +42,7 @@ class CirclePath final : public ReferencePath {
   PathPoint at(double t) const override;
   /// Closed form: velocity(t) sin(w window/2) / (w window/2).
   Eigen::Vector2d meanVelocity(double t, double window) const override;
-  double period() const override;
+  double duration() const override;
   std::string describe() const override;
 
  private:
@@ -56,7 +57,7 @@ class DiamondPath final : public ReferencePath {
   /// @param half_diagonal d [m] > 0, @param speed [m/s] > 0. @throw std::invalid_argument
   DiamondPath(double half_diagonal, double speed);
   PathPoint at(double t) const override;
-  double period() const override;
+  double duration() const override;
   std::string describe() const override;
 
  private:
