@@ -17,7 +17,7 @@ packages=(
   # core libraries (liburdfdom-dev: urdf_parser/urdf_parser.h, linked directly; no ROS urdf)
   libeigen3-dev liburdfdom-dev libboost-dev libyaml-cpp-dev
   # tests and benchmarks
-  libgtest-dev libgmock-dev googletest libbenchmark-dev librostest-dev python3-rostest
+  libgtest-dev libgmock-dev googletest libbenchmark-dev librostest-dev python3-rostest catkin-lint
   # running stacks, bags, plots, rviz
   python3-rospy python3-roslaunch python3-rosbag python3-rosnode python3-rostopic rosbash
   python3-nav-msgs python3-geometry-msgs python3-sensor-msgs python3-diagnostic-msgs
