@@ -4,7 +4,7 @@
 The launch files run it from a <param command="..."> tag, which roslaunch executes while it
 reads the file, before it starts a master or any node:
 
-    <param name="$(arg ns)/launch_arguments" command="rosrun spherical_robots
+    <param name="$(arg ns)/launch_arguments" command="$(find spherical_robots)/scripts/
         check_launch_arguments.py terrain_stack 'robot=$(arg robot)' 'path=$(arg path)' ..."/>
 
 The first word names the launch file, as its path in launch/ without .launch (for the arguments
@@ -25,7 +25,6 @@ import os
 import re
 import sys
 
-import rospkg
 import yaml
 
 NAME = r'[A-Za-z][A-Za-z0-9_]*'
@@ -225,7 +224,8 @@ class YamlOf(Domain):
 
 
 def package_path():
-    return rospkg.RosPack().get_path('spherical_robots')
+    # scripts/ of the package, in the source tree or installed in its share directory
+    return os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
 
 
 def modules_plus_one(arguments):

@@ -134,8 +134,9 @@ class LaunchArguments(unittest.TestCase):
         params_before = set(master.getParamNames())
         problems = []
         for name, args, first_line in BAD_VALUES:
-            case = 'roslaunch %s %s %s' % (PKG, name, ' '.join(args))
-            result = subprocess.run(['roslaunch', PKG, name] + args, capture_output=True,
+            case = 'roslaunch %s %s' % (name, ' '.join(args))
+            # By path: the test's environment has the package in the source tree and installed.
+            result = subprocess.run(['roslaunch', launch_path(name)] + args, capture_output=True,
                                     text=True, timeout=120, stdin=subprocess.DEVNULL)
             lines = result.stderr.splitlines()
             if result.returncode == 0 or not lines or lines[0] != first_line:
