@@ -211,6 +211,17 @@ class Hardware(Domain):
             ', '.join(drivers), ', none' if self.none_allowed else '')
 
 
+class ActuatorModels(Domain):
+    """none, or a YAML file of actuator models for a driver that takes them (not loopback)."""
+
+    FILE = Optional(ExistingFile('a YAML file of actuator models'))
+
+    def check(self, value, arguments):
+        if value != 'none' and arguments.get('hardware') == 'loopback':
+            return 'expected none with hardware:=loopback (that driver has no actuator models)'
+        return self.FILE.check(value, arguments)
+
+
 class YamlOf(Domain):
     def __init__(self, kind, describe):
         self.kind, self.text = kind, describe
@@ -256,7 +267,7 @@ DOMAINS = {
     'clock_leader': Optional(Pattern(ABSOLUTE_NAME.pattern, 'an absolute namespace, e.g. /sphere')),
     'clock_followers': Optional(NameList()),
     'hardware': Hardware(none_allowed=True),
-    'actuator_models': Optional(ExistingFile('a YAML file of actuator models')),
+    'actuator_models': ActuatorModels(),
     'nodelet': BOOLEAN,
     'wait_for_subscribers': Number(minimum=0, whole=True),
     # Norma

@@ -62,7 +62,7 @@ BAD_VALUES = [
     ('freebot_stack.launch', ['modules:=3', 'radii:=[0.04, 0.034]'],
      "argument 'radii' = '[0.04, 0.034]': expected none or a list of modules + 1 radii > 0 [m], "
      'e.g. "[0.04, 0.034, 0.034, 0.034, 0.034]"'),
-    ('terrain_stack.launch', ['hardware:=loopback', 'actuator_models:=/no/such/models.yaml'],
+    ('roller_stack.launch', ['actuator_models:=/no/such/models.yaml'],
      "argument 'actuator_models' = '/no/such/models.yaml': expected none or a YAML file of "
      'actuator models (an existing file)'),
 ]
