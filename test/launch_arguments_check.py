@@ -97,7 +97,7 @@ class LaunchArguments(unittest.TestCase):
         try:
             for name, args in sorted(REQUIRED.items()):
                 sys.argv = ['roslaunch-check'] + args  # where roslaunch's loader reads them
-                error = roslaunch.rlutil.check_roslaunch(launch_path(name), use_test_depends=True)
+                error = roslaunch.rlutil.check_roslaunch(launch_path(name))
                 if error:
                     errors.append('%s %s: %s' % (name, ' '.join(args), error))
         finally:
