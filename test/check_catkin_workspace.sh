@@ -6,7 +6,7 @@
 # one CMake project, where a second target of the same name is an error); then catkin_make,
 # one gtest through catkin's run_tests target and catkin_test_results, and
 # `rosrun spherical_robots sphere_sim --help` in the sourced devel space.
-# A second full build of the package (about 25 min on 2 busy cores): not part of
+# A second full build of the package (30 min on 2 busy cores, measured): not part of
 # scripts/run_tests.sh or CI; run it by hand after changing CMakeLists.txt or package.xml:
 #   test/check_catkin_workspace.sh [WORKSPACE]
 # Exit status 0 only if every step succeeded.
