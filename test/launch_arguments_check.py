@@ -8,11 +8,14 @@
 * `roslaunch --ros-args` (roslaunch.arg_dump) lists no argument as undocumented, and as required
   only those that are (replay.launch's bag; the actuators and their limits of hardware.launch,
   which every stack states; the drivers' actuators).
-* Every argument a user can set reaches the file's check (scripts/check_launch_arguments.py).
+* Every argument a user can set reaches the file's check (scripts/check_launch_arguments.py),
+  whose domains accept and refuse what the stacks do (a table of cases written from the launch
+  files and the nodes' parameters).
 * Bad values through a real `roslaunch` against this test's master: the launch stops, the first
   line on stderr names the argument, the value and what is allowed, and nothing was started: no
   node besides this test's, no parameter set.
 """
+import importlib.util
 import os
 import re
 import subprocess
@@ -68,6 +71,51 @@ BAD_VALUES = [
 ]
 
 
+# (launch file, NAME=VALUE..., the arguments outside their domain): what the stacks accept.
+DOMAIN_CASES = [
+    ('terrain_stack', ['robot=RS', 'path=diamond', 'model=rolling', 'law=paper'], []),
+    ('terrain_stack', ['rviz=True', 'nodelet=0', 'owns_clock=false'], []),
+    ('terrain_stack', ['rviz=yes', 'ns=1sphere', 'frame_prefix=sphere'],
+     ['rviz', 'ns', 'frame_prefix']),
+    ('terrain_stack', ['clock=lockstep', 'speedup=0'], []),
+    ('terrain_stack', ['clock=free', 'speedup=0'], ['speedup']),  # 0 would stop free time
+    ('terrain_stack', ['speedup=nan', 'duration=inf'], ['speedup', 'duration']),
+    ('terrain_stack', ['record=none', 'clock_leader=/sphere', 'clock_followers=/a/b,/c/d'], []),
+    ('terrain_stack', ['record=run.bag', 'clock_leader=sphere', 'clock_followers=a/b'],
+     ['clock_leader', 'clock_followers']),
+    ('terrain_stack', ['record=', 'hardware=loopback', 'actuator_models=' + __file__],
+     ['record', 'actuator_models']),
+    ('terrain_stack', ['hardware=sim', 'actuator_models=' + __file__], []),
+    ('terrain_stack', ['hardware=none', 'wait_for_subscribers=2'], []),
+    ('terrain_stack', ['hardware=robot', 'wait_for_subscribers=1.5'],
+     ['hardware', 'wait_for_subscribers']),
+    ('rotor_stack', ['steps=0', 'corrections=-1', 'k=0', 'target=1,2'],
+     ['steps', 'corrections', 'k', 'target']),
+    ('rotor_stack', ['steps=3', 'corrections=2', 'k=2.5', 'target=-0.1,2e-2,7'], []),
+    ('freebot_stack', ['modules=2', 'radii=[0.04, 0.03, 0.03]'], []),
+    ('freebot_stack', ['modules=2', 'radii=[0.04, 0.03, 0.03, 0.03]'], ['radii']),
+    ('freebot_stack', ['modules=2', 'radii=[0.04, -0.03, 0.03]'], ['radii']),
+    ('record', ['robot=k2.5', 'bag=none', 'compression=lz4'], []),
+    ('record', ['bag=/no/such/dir/x.bag', 'compression=gzip'], ['bag', 'compression']),
+    ('replay', ['bag=' + FIXTURE_BAG, 'topics=/sphere/odom /tf', 'rate=4'], []),
+    ('replay', ['bag=test/data/x.bag', 'topics=odom', 'rate=0'], ['bag', 'topics', 'rate']),
+    ('hardware', ['hardware=loopback', 'actuators=[a, b]', 'effort_limits={a: 2}'], []),
+    ('hardware', ['hardware=none', 'actuators=a', 'effort_limits=[2]'],
+     ['hardware', 'actuators', 'effort_limits']),
+    ('hardware/loopback', ['models=none', 'manager=none'], []),
+    ('hardware/loopback', ['models=' + __file__], ['models']),
+]
+
+
+def checker():
+    """scripts/check_launch_arguments.py as a module."""
+    path = os.path.join(SOURCE, 'scripts', 'check_launch_arguments.py')
+    spec = importlib.util.spec_from_file_location('check_launch_arguments', path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
 def launch_path(name):
     return os.path.join(LAUNCH, name)
 
@@ -90,6 +138,16 @@ class LaunchArguments(unittest.TestCase):
         found = {os.path.relpath(os.path.join(d, f), LAUNCH)
                  for d, _, files in os.walk(LAUNCH) for f in files if f.endswith('.launch')}
         self.assertEqual(found, set(REQUIRED))
+
+    def test_domains(self):
+        check = checker()
+        problems = []
+        for launch, words, expected in DOMAIN_CASES:
+            arguments = dict(w.split('=', 1) for w in words)
+            found = [name for name, _, _ in check.problems(launch, arguments)]
+            if found != expected:
+                problems.append('%s %s: outside %s, expected %s' % (launch, words, found, expected))
+        self.assertFalse(problems, '\n'.join(problems))
 
     def test_each_loads_with_its_required_arguments(self):
         errors = []
