@@ -166,8 +166,8 @@ class ExistingFile(Domain):
     def check(self, value, arguments):
         if os.path.isfile(value) and (os.path.isabs(value) or not self.absolute):
             return None
-        return 'expected %s (%s existing file)' % (self.text,
-                                                   'the absolute path to an' if self.absolute else 'an')
+        which = 'the absolute path to an' if self.absolute else 'an'
+        return 'expected %s (%s existing file)' % (self.text, which)
 
 
 class Record(Domain):

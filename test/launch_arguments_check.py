@@ -198,7 +198,8 @@ class LaunchArguments(unittest.TestCase):
                                     text=True, timeout=120, stdin=subprocess.DEVNULL)
             lines = result.stderr.splitlines()
             if result.returncode == 0 or not lines or lines[0] != first_line:
-                problems.append('%s: exit %d, stderr:\n%s' % (case, result.returncode, result.stderr))
+                problems.append('%s: exit %d, stderr:\n%s'
+                                % (case, result.returncode, result.stderr))
             if 'process[' in result.stdout:
                 problems.append('%s started a process:\n%s' % (case, result.stdout))
             if self.nodes(master) != nodes_before or set(master.getParamNames()) != params_before:
