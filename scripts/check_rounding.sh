@@ -19,7 +19,7 @@ configure_and_build() {
     -DCMAKE_CXX_FLAGS="-march=native -ffast-math" -DCMAKE_CXX_FLAGS_RELEASE="-O3 -DNDEBUG" \
     -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_DEVEL_PREFIX="$fast_build/devel" \
     -DCATKIN_ENABLE_TESTING=OFF > "$fast_build.cmake.log"
-  make -C "$fast_build" -j2 sphere_sim > "$fast_build.make.log"
+  make -C "$fast_build" -j2 spherical_robots_sphere_sim > "$fast_build.make.log"
 }
 mkdir -p "$fast_build"
 sr_step "sphere_sim with -O3 -march=native -ffast-math in $fast_build" configure_and_build
