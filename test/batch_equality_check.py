@@ -60,6 +60,7 @@ def launch_value(args, name, default):
 
 
 def terrain_case(duration, extra_args, stack='terrain'):
+    from nav_msgs.msg import Odometry
     from spherical_robots.msg import TerrainState, TrackingError
 
     state_fields = ([('contact_point.' + a, lambda m, a=a: getattr(m.contact_point, a), a + '0', 'm')
@@ -68,6 +69,9 @@ def terrain_case(duration, extra_args, stack='terrain'):
                     [(name, lambda m, name=name: getattr(m, name), name, unit)
                      for name, unit in (('psi', 'rad'), ('phi', 'rad'), ('roll_rate', 'rad/s'),
                                         ('lateral_rate', 'rad/s'), ('turn_rate', 'rad/s'))])
+    # odom first: the topic whose subscribers time waits for, so this checker sees every state.
+    odom_fields = [('pose.position.' + a, lambda m, a=a: getattr(m.pose.pose.position, a), 'c' + a, 'm')
+                   for a in 'xyz']
     error_fields = ([('desired.' + a, lambda m, a=a: getattr(m.desired, a), a + 'd', 'm') for a in 'xyz'] +
                     [('error_norm', lambda m: m.error_norm, 'e_norm', 'm'),
                      ('zeta', lambda m: m.zeta, 'zeta', 'rad')])
@@ -84,7 +88,7 @@ def terrain_case(duration, extra_args, stack='terrain'):
     return StackCase(
         launch='%s_stack.launch' % stack, launch_args=['duration:=%g' % duration],
         ns=launch_value(extra_args, 'ns', 'sphere' if stack == 'terrain' else stack),
-        topics=[('terrain_state', TerrainState, state_fields),
+        topics=[('odom', Odometry, odom_fields), ('terrain_state', TerrainState, state_fields),
                 ('tracking_error', TrackingError, error_fields)],
         sphere_sim_args=sphere_sim_args)
 

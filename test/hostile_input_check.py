@@ -36,8 +36,7 @@ from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import JointState
 from std_msgs.msg import UInt32
 
-from spherical_robots.msg import (FreebotGoalResult, FreebotState, NormaState, TerrainState,
-                                  TrackingError)
+from spherical_robots.msg import FreebotGoalResult, FreebotState, NormaState, TrackingError
 from spherical_robots.srv import PlanRotorMotion, PlanRotorMotionRequest
 from spherical_robots_testing import wait_until
 
@@ -104,17 +103,6 @@ def stamped_copies(last, label):
     return cases
 
 
-def terrain_state_cases(last):
-    return edited_copies(last, (
-        ('contact NaN', lambda m: setattr(m.contact_point, 'x', NAN)),
-        ('contact 1e300', lambda m: setattr(m.contact_point, 'y', HUGE)),
-        ('centre -Inf', lambda m: setattr(m.centre, 'z', -INF)),
-        ('zero normal', lambda m: setattr(m.normal, 'z', 0.0)),
-        ('non-unit heading', lambda m: setattr(m.heading, 'x', 3.0)),
-        ('phi 1e300', lambda m: setattr(m, 'phi', HUGE)),
-    )) + stamped_copies(last, 'terrain_state')
-
-
 def norma_state_cases(last):
     def entry(field, i, value):
         def edit(m):
@@ -174,7 +162,7 @@ def freebot_state_cases(last):
 
 
 def goal_cases(_last):
-    def goal(x, y, z, qw=1.0, frame='world'):
+    def goal(x, y, z, qw=1.0, frame='freebot/link0'):
         msg = PoseStamped()
         msg.header.frame_id = frame
         msg.header.stamp = rospy.Time.now()
@@ -198,7 +186,7 @@ STACKS = {
     'terrain': {
         'joint_topics': [('actuators/state', ['theta', 'phi', 'psi'], 'velocity'),
                          ('actuators/command', ['theta', 'phi', 'psi'], 'velocity')],
-        'states': [('terrain_state', TerrainState, terrain_state_cases)],
+        'states': [('odom', Odometry, odometry_cases)],
         'tracking': True,
     },
     'roller': {
@@ -206,7 +194,7 @@ STACKS = {
                          ('drive/command', ['theta', 'phi'], 'velocity'),
                          ('actuators/state', ['roller_1', 'roller_2'], 'velocity'),
                          ('actuators/command', ['roller_1', 'roller_2'], 'velocity')],
-        'states': [('terrain_state', TerrainState, terrain_state_cases)],
+        'states': [('odom', Odometry, odometry_cases)],
         'tracking': True,
     },
     'norma': {
@@ -283,7 +271,7 @@ class HostileInput(unittest.TestCase):
     def send_goal(cls):
         """Table II's C (reachable as a full pose with 4 modules), driven while the bursts come."""
         goal = PoseStamped()
-        goal.header.frame_id = 'world'
+        goal.header.frame_id = 'freebot/link0'
         goal.pose.position.x, goal.pose.position.y, goal.pose.position.z = 0.0924, 0.1597, 0.1154
         q = goal.pose.orientation
         q.w, q.x, q.y, q.z = 0.9682, 0.0874, 0.2220, 0.0756

@@ -189,21 +189,49 @@ class TrackingCheck(StackFixture):
         cls.errors = Recorder('tracking_error', TrackingError)
 
     def test_01_odometry(self):
+        """REP 105: pose of base_link in odom, gravity-aligned; twist in base_link, so that the
+        twist turned into odom, averaged over two messages, is the motion between them;
+        covariances not 0."""
+        # Past the start, whose actuator ramps change the velocity within a publish period.
+        wait_until(lambda: self.odom.count() >= 300, '300 odom messages (6 s)')
         odom = self.odom.last()
-        self.assertEqual(odom.header.frame_id, 'world')
+        self.assertEqual(odom.header.frame_id, self.prefix + 'odom')
         self.assertEqual(odom.child_frame_id, self.prefix + 'base_link')
         p = odom.pose.pose.position
         self.assertTrue(all(math.isfinite(v) for v in (p.x, p.y, p.z)))
+        for diagonal in (odom.pose.covariance[::7], odom.twist.covariance[::7]):
+            self.assertTrue(all(v > 0.0 for v in diagonal), diagonal)
+        def velocity_in_odom(msg):
+            q, v = msg.pose.pose.orientation, msg.twist.twist.linear
+            self.assertAlmostEqual(q.x, 0.0, delta=1e-12)  # z up: a turn about z only
+            self.assertAlmostEqual(q.y, 0.0, delta=1e-12)
+            yaw = 2.0 * math.atan2(q.z, q.w)
+            return (math.cos(yaw) * v.x - math.sin(yaw) * v.y,
+                    math.sin(yaw) * v.x + math.cos(yaw) * v.y, v.z)
+
+        recent = self.odom.since(-20)
+        for before, after in zip(recent, recent[1:]):
+            dt = (after.header.stamp - before.header.stamp).to_sec()
+            a, b = after.pose.pose.position, before.pose.pose.position
+            moved = ((a.x - b.x) / dt, (a.y - b.y) / dt, (a.z - b.z) / dt)
+            mean = [(u + w) / 2.0 for u, w in zip(velocity_in_odom(before), velocity_in_odom(after))]
+            for axis in range(3):  # the trapezoid's error over 0.02 s while tracking: < 1 mm/s
+                self.assertAlmostEqual(mean[axis], moved[axis], delta=1e-3)
 
     def test_02_tf(self):
-        for child in ('base_link', 'heading', 'marker_link'):  # marker_link: robot_state_publisher
-            transform = self.tf_buffer.lookup_transform('world', self.prefix + child, rospy.Time(0),
+        # map -> odom (static) -> base_link -> shell (-> marker_link: robot_state_publisher), heading
+        for child in ('odom', 'base_link', 'shell', 'heading', 'marker_link'):
+            transform = self.tf_buffer.lookup_transform('map', self.prefix + child, rospy.Time(0),
                                                         rospy.Duration(10.0))
             t = transform.transform.translation
             self.assertTrue(all(math.isfinite(v) for v in (t.x, t.y, t.z)), child)
-        # The heading frame sits at the contact point, base_link R above it along the normal.
-        base = self.tf_buffer.lookup_transform('world', self.prefix + 'base_link', rospy.Time(0))
-        heading = self.tf_buffer.lookup_transform('world', self.prefix + 'heading', rospy.Time(0))
+        # The shell's centre is base_link's; the heading frame sits at the contact point, base_link
+        # R above it along the normal.
+        shell = self.tf_buffer.lookup_transform(self.prefix + 'base_link', self.prefix + 'shell',
+                                                rospy.Time(0)).transform.translation
+        self.assertEqual((shell.x, shell.y, shell.z), (0.0, 0.0, 0.0))
+        base = self.tf_buffer.lookup_transform('map', self.prefix + 'base_link', rospy.Time(0))
+        heading = self.tf_buffer.lookup_transform('map', self.prefix + 'heading', rospy.Time(0))
         b, h = base.transform.translation, heading.transform.translation
         # Transforms are published together but may be looked up at different times: allow the
         # distance travelled in a few steps.
@@ -211,7 +239,7 @@ class TrackingCheck(StackFixture):
 
     def test_03_desired_path_latched(self):
         path = rospy.wait_for_message('desired_path', Path, timeout=30.0)
-        self.assertEqual(path.header.frame_id, 'world')
+        self.assertEqual(path.header.frame_id, self.prefix + 'odom')
         self.assertGreaterEqual(len(path.poses), 100)
         for pose in path.poses:
             q = pose.pose.position
@@ -237,14 +265,14 @@ class TrackingCheck(StackFixture):
 
     def test_06_bad_messages_kill_nothing(self):
         self.check_rejected_actuator_state()
-        # The controller ignores terrain_state messages it cannot use, and so does the hardware
-        # interface with a non-finite set-point.
-        state_pub = rospy.Publisher('terrain_state', TerrainState, queue_size=10)
-        bad_state = self.states.last()
-        bad_state.normal.x = float('nan')
-        publish_until(state_pub, [bad_state],
-                      lambda: self.rejected_count(CONTROLLER_STATUS, 'terrain_state') >= 1,
-                      'the controller to report a rejected terrain_state on /diagnostics')
+        # The controller ignores odometry it cannot use, and so does the hardware interface with a
+        # non-finite set-point.
+        odom_pub = rospy.Publisher('odom', Odometry, queue_size=10)
+        bad_odom = self.odom.last()
+        bad_odom.pose.pose.position.x = float('nan')
+        publish_until(odom_pub, [bad_odom],
+                      lambda: self.rejected_count(CONTROLLER_STATUS, 'odom') >= 1,
+                      'the controller to report a rejected odom on /diagnostics')
         command_pub = rospy.Publisher('actuators/command', JointState, queue_size=10)
         publish_when_connected(command_pub, JointState(name=['theta', 'phi', 'psi'],
                                                        velocity=[float('nan'), 0.0, 0.0]))
@@ -601,9 +629,34 @@ class SmoothnessCheck(StackFixture):
         self.assertLessEqual(worst, 1.0)
 
 
+class OdometryFeedbackCheck(StackFixture):
+    """mode:=odometry: only standard messages reach the controller (issue 15 item 2). The test
+    launch file remaps the plant's terrain_state to a topic nobody reads; by the master's own
+    record the controller reads odom (and, for RS, joint_states: the tilt) and no message of the
+    plant's own type, and it still tracks, equal to the batch run (~batch)."""
+
+    def test_01_controller_reads_standard_messages_only(self):
+        import rosgraph
+        controller = rospy.resolve_name('pure_pursuit_controller')
+        publishers, subscribers, _ = rosgraph.Master(NAME).getSystemState()
+        read = sorted(topic for topic, nodes in subscribers if controller in nodes)
+        types = dict(rosgraph.Master(NAME).getTopicTypes())
+        rospy.loginfo('%s reads %s', controller, read)
+        self.assertIn(rospy.resolve_name('odom'), read)
+        if rospy.get_param('pure_pursuit_controller/robot_type') == 'RS':
+            self.assertIn(rospy.resolve_name('joint_states'), read)
+        for topic in read:
+            self.assertNotEqual(types.get(topic), PKG + '/TerrainState', topic)
+        # The plant's own message goes elsewhere: nothing publishes it here.
+        self.assertNotIn(rospy.resolve_name('terrain_state'), dict(publishers))
+
+    def test_02_tracking_converges(self):
+        assert_tracking(self, Recorder('tracking_error', TrackingError))
+
+
 if __name__ == '__main__':
     rospy.init_node(NAME)
     mode = rospy.get_param('~mode', 'tracking')
     rostest.rosrun(PKG, NAME, {'teleop': TeleopCheck, 'seam': SeamCheck, 'roller': RollerCheck,
-                               'norma': NormaCheck,
+                               'norma': NormaCheck, 'odometry': OdometryFeedbackCheck,
                                'smoothness': SmoothnessCheck}.get(mode, TrackingCheck))

@@ -59,7 +59,7 @@ TEST(FreebotConversion, ChainStateRoundTripAndRejections) {
   EXPECT_THROW(sr::conversions::chainStateFromMsg(msg), std::invalid_argument);
 }
 
-// The chain's transforms composed from the world give each sphere's pose by the manipulator's
+// The chain's transforms composed from the base B_0 give each sphere's pose by the manipulator's
 // forward kinematics (B_n: the end effector); each trolley arrow sits on its sphere's surface.
 TEST(FreebotConversion, ChainTransformsComposeToTheForwardKinematics) {
   const sr::freebot::SrcManipulator manipulator({0.05, 0.04, 0.03});
@@ -70,18 +70,17 @@ TEST(FreebotConversion, ChainTransformsComposeToTheForwardKinematics) {
   state.headings = {0.3, -1.2};
   const auto transforms = sr::conversions::freebotChainTransforms(manipulator, state, "fb/",
                                                                    ros::Time(1.0));
-  ASSERT_EQ(transforms.size(), 3u);
-  EXPECT_EQ(transforms[0].header.frame_id, sr::kWorldFrame);
+  ASSERT_EQ(transforms.size(), 2u);
   Eigen::Isometry3d world_from_link = Eigen::Isometry3d::Identity();
   const std::vector<sr::freebot::LinkPose> links = manipulator.forwardKinematics(state.joints);
   for (std::size_t i = 0; i < transforms.size(); ++i) {
     const auto& t = transforms[i].transform;
-    EXPECT_EQ(transforms[i].child_frame_id, sr::conversions::freebotLinkFrame("fb/", i));
+    EXPECT_EQ(transforms[i].header.frame_id, sr::conversions::freebotLinkFrame("fb/", i));
+    EXPECT_EQ(transforms[i].child_frame_id, sr::conversions::freebotLinkFrame("fb/", i + 1));
     world_from_link = world_from_link * Eigen::Translation3d(t.translation.x, t.translation.y,
                                                              t.translation.z) *
                       Eigen::Quaterniond(t.rotation.w, t.rotation.x, t.rotation.y, t.rotation.z);
-    if (i == 0) continue;
-    EXPECT_LT((world_from_link.translation() - links[i - 1].position).norm(), 1e-12) << i;
+    EXPECT_LT((world_from_link.translation() - links[i].position).norm(), 1e-12) << i;
   }
   const sr::freebot::LinkPose end = manipulator.endEffector(state.joints);
   EXPECT_LT((world_from_link.translation() - end.position).norm(), 1e-12);

@@ -72,8 +72,8 @@ TEST(NormaTrackingErrorConversion, ErrorIsReferenceMinusPosition) {
   reference.x = 2.0;
   reference.y = 1.0;
   reference.x_dot = 0.5;
-  const auto msg = conv::toNormaTrackingErrorMsg(reference, 1.5, 3.0, 2.06, 0.1, ros::Time(1.0));
-  EXPECT_EQ(msg.header.frame_id, sr::kWorldFrame);
+  const auto msg = conv::toNormaTrackingErrorMsg(reference, 1.5, 3.0, 2.06, 0.1, "n/odom", ros::Time(1.0));
+  EXPECT_EQ(msg.header.frame_id, "n/odom");
   EXPECT_EQ(msg.error.x, 0.5);
   EXPECT_EQ(msg.error.y, -2.0);
   EXPECT_EQ(msg.desired_velocity.x, 0.5);
@@ -82,7 +82,7 @@ TEST(NormaTrackingErrorConversion, ErrorIsReferenceMinusPosition) {
 
 TEST(NormaPathConversion, SamplesEq52AndCloses) {
   const double period = 200.0 * M_PI;
-  const auto path = conv::lissajousPathMsg(period, 100, ros::Time(1.0));
+  const auto path = conv::lissajousPathMsg(period, 100, "n/odom", ros::Time(1.0));
   ASSERT_EQ(path.poses.size(), 101u);
   for (std::size_t k = 0; k < path.poses.size(); k += 25) {
     const sr::norma::PathPoint p = sr::norma::lissajousPath(period * k / 100);

@@ -98,20 +98,36 @@ geometry_msgs::PoseStamped toPoseStamped(const Eigen::Vector3d& position,
   return msg;
 }
 
-nav_msgs::Odometry toOdometry(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
-                              const Eigen::Vector3d& linear_velocity,
-                              const Eigen::Vector3d& angular_velocity, const std::string& frame,
-                              const std::string& child, const ros::Time& stamp) {
-  const Eigen::Matrix3d world_from_child = orientation.normalized().toRotationMatrix();
+nav_msgs::Odometry bodyOdometry(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
+                                const Eigen::Vector3d& body_linear, const Eigen::Vector3d& body_angular,
+                                const config::OdometryParameters& odometry, const std::string& frame,
+                                const std::string& child, const ros::Time& stamp) {
   nav_msgs::Odometry msg;
   msg.header.stamp = stamp;
   msg.header.frame_id = frame;
   msg.child_frame_id = child;
   msg.pose.pose.position = toPoint(position);
-  msg.pose.pose.orientation = toQuaternion(orientation);
-  msg.twist.twist.linear = toVector3(world_from_child.transpose() * linear_velocity);
-  msg.twist.twist.angular = toVector3(world_from_child.transpose() * angular_velocity);
+  msg.pose.pose.orientation.x = orientation.x();
+  msg.pose.pose.orientation.y = orientation.y();
+  msg.pose.pose.orientation.z = orientation.z();
+  msg.pose.pose.orientation.w = orientation.w();
+  msg.twist.twist.linear = toVector3(body_linear);
+  msg.twist.twist.angular = toVector3(body_angular);
+  for (int i = 0; i < 6; ++i) {  // row-major 6 x 6
+    msg.pose.covariance[7 * i] = odometry.pose_covariance_diagonal[i];
+    msg.twist.covariance[7 * i] = odometry.twist_covariance_diagonal[i];
+  }
   return msg;
+}
+
+nav_msgs::Odometry toOdometry(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
+                              const Eigen::Vector3d& linear_velocity,
+                              const Eigen::Vector3d& angular_velocity,
+                              const config::OdometryParameters& odometry, const std::string& frame,
+                              const std::string& child, const ros::Time& stamp) {
+  const Eigen::Matrix3d child_from_frame = orientation.toRotationMatrix().transpose();
+  return bodyOdometry(position, orientation, child_from_frame * linear_velocity,
+                      child_from_frame * angular_velocity, odometry, frame, child, stamp);
 }
 
 namespace {
@@ -167,8 +183,8 @@ PlanarTwist planarTwist(const geometry_msgs::Twist& twist, double max_magnitude)
   return result;
 }
 
-Eigen::Quaterniond fromQuaternion(const geometry_msgs::Quaternion& q, const std::string& field,
-                                  double tolerance) {
+Eigen::Quaterniond checkedQuaternion(const geometry_msgs::Quaternion& q, const std::string& field,
+                                     double tolerance) {
   const Eigen::Quaterniond value(q.w, q.x, q.y, q.z);
   if (!value.coeffs().allFinite())
     throw std::invalid_argument(field + " has a non-finite coefficient");
@@ -178,7 +194,12 @@ Eigen::Quaterniond fromQuaternion(const geometry_msgs::Quaternion& q, const std:
          << tolerance << ")";
     throw std::invalid_argument(what.str());
   }
-  return value.normalized();
+  return value;
+}
+
+Eigen::Quaterniond fromQuaternion(const geometry_msgs::Quaternion& q, const std::string& field,
+                                  double tolerance) {
+  return checkedQuaternion(q, field, tolerance).normalized();
 }
 
 geometry_msgs::PointStamped toPointStamped(const Eigen::Vector3d& p, const std::string& frame,

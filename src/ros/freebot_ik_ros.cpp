@@ -32,6 +32,7 @@ FreebotIkParameters loadFreebotIkParameters(const config::ParameterSource& stack
   p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);
   p.max_stamp_skew = config::positiveNumber(node, "max_stamp_skew", p.max_stamp_skew);
   p.max_goal_distance = config::positiveNumber(node, "max_goal_distance", p.max_goal_distance);
+  p.base_frame = conversions::freebotLinkFrame(node.text("frame_prefix").value_or(""), 0);
   return p;
 }
 
@@ -83,9 +84,9 @@ void FreebotIkRos::onGoal(const geometry_msgs::PoseStamped& msg) {
   const ros::Time now = workingTime(work_.participant());
   std::vector<freebot::GoalVerdict> verdicts;
   try {
-    if (!msg.header.frame_id.empty() && msg.header.frame_id != kWorldFrame)
+    if (!msg.header.frame_id.empty() && msg.header.frame_id != parameters_.base_frame)
       throw std::invalid_argument("frame_id '" + msg.header.frame_id + "': expected '" +
-                                  kWorldFrame + "' (or empty)");
+                                  parameters_.base_frame + "' (or empty)");
     freebot::GoalPose goal;
     goal.position = conversions::boundedPoint(msg.pose.position, "pose.position",
                                               parameters_.max_goal_distance);
@@ -122,7 +123,7 @@ void FreebotIkRos::publishResult(const freebot::GoalVerdict& verdict,
     ROS_WARN_STREAM(text.str());
   else if (verdict.status != GoalStatus::Rejected)  // logged by its input monitor
     ROS_INFO_STREAM(text.str());
-  result_pub_.publish(conversions::toGoalResultMsg(verdict, pose, kWorldFrame, now));
+  result_pub_.publish(conversions::toGoalResultMsg(verdict, pose, parameters_.base_frame, now));
   last_verdict_ = verdict;
   updater_.force_update();
 }

@@ -37,6 +37,7 @@ NormaControllerParameters loadNormaControllerParameters(const config::ParameterS
   p.publish_rate = config::positiveNumber(node, "publish_rate", p.publish_rate);
   p.max_stamp_skew = config::positiveNumber(node, "max_stamp_skew", p.max_stamp_skew);
   p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);
+  p.odom_frame = node.text("odom_frame").value_or(p.odom_frame);
   return p;
 }
 
@@ -54,7 +55,8 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   target_pub_ = step_publications_.advertise<geometry_msgs::PointStamped>(nh, "target");
   desired_path_pub_ = nh.advertise<nav_msgs::Path>("desired_path", 1, true);
   desired_path_pub_.publish(
-      conversions::lissajousPathMsg(kPathPeriod, kDesiredPathSamples, ros::Time::now()));
+      conversions::lissajousPathMsg(kPathPeriod, kDesiredPathSamples, parameters_.odom_frame,
+                                    ros::Time::now()));
   state_sub_ = nh.subscribe("norma_state", kLoopQueueSize, &NormaControllerRos::onState, this);
   actuator_sub_ = nh.subscribe("actuators/state", kLoopQueueSize, &NormaControllerRos::onActuatorState, this);
   updater_.setHardwareID("Norma");
@@ -115,8 +117,10 @@ void NormaControllerRos::control(const spherical_robots::NormaState& msg) {
     const double zeta = norma::kinematicLayer(controller().gains().kinematic, robot_.R, msg.x,
                                               msg.y, msg.psi, reference).zeta;
     error_pub_.publish(
-        conversions::toNormaTrackingErrorMsg(reference, msg.x, msg.y, output.error, zeta, now));
-    target_pub_.publish(conversions::toPointStamped({reference.x, reference.y, 0.0}, kWorldFrame, now));
+        conversions::toNormaTrackingErrorMsg(reference, msg.x, msg.y, output.error, zeta,
+                                             parameters_.odom_frame, now));
+    target_pub_.publish(conversions::toPointStamped({reference.x, reference.y, 0.0},
+                                                    parameters_.odom_frame, now));
   }
 }
 

@@ -54,10 +54,11 @@ sensor_msgs::JointState normaEffortCommand(double torque, double force, const ro
 
 spherical_robots::TrackingError toNormaTrackingErrorMsg(const norma::PathPoint& reference, double x,
                                                         double y, double error_norm, double zeta,
+                                                        const std::string& frame,
                                                         const ros::Time& stamp) {
   spherical_robots::TrackingError msg;
   msg.header.stamp = stamp;
-  msg.header.frame_id = kWorldFrame;
+  msg.header.frame_id = frame;
   msg.desired = toPoint({reference.x, reference.y, 0.0});
   msg.desired_velocity = toVector3({reference.x_dot, reference.y_dot, 0.0});
   msg.error = toVector3({reference.x - x, reference.y - y, 0.0});
@@ -66,14 +67,15 @@ spherical_robots::TrackingError toNormaTrackingErrorMsg(const norma::PathPoint& 
   return msg;
 }
 
-nav_msgs::Path lissajousPathMsg(double period, int samples, const ros::Time& stamp) {
+nav_msgs::Path lissajousPathMsg(double period, int samples, const std::string& frame,
+                                const ros::Time& stamp) {
   nav_msgs::Path path;
-  path.header.frame_id = kWorldFrame;
+  path.header.frame_id = frame;
   path.header.stamp = stamp;
   for (int k = 0; k <= samples; ++k) {
     const norma::PathPoint p = norma::lissajousPath(period * k / samples);
     path.poses.push_back(
-        toPoseStamped({p.x, p.y, 0.0}, Eigen::Quaterniond::Identity(), kWorldFrame, stamp));
+        toPoseStamped({p.x, p.y, 0.0}, Eigen::Quaterniond::Identity(), frame, stamp));
   }
   return path;
 }

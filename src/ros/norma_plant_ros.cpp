@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "spherical_robots/config/norma_config.hpp"
+#include "spherical_robots/core/angles.hpp"
 #include "spherical_robots/config/norma_description.hpp"
 #include "spherical_robots/ros/norma_conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
@@ -16,8 +17,9 @@
 namespace spherical_robots {
 namespace {
 
-PlantLoop::Defaults loopDefaults() {
+PlantLoop::Defaults loopDefaults(const std::string& odom_frame) {
   PlantLoop::Defaults defaults;
+  defaults.root_frame = odom_frame;
   defaults.task = "norma plant";
   defaults.hardware_id = "Norma";
   defaults.parameters.step = 0.001;
@@ -37,14 +39,16 @@ NormaPlantParameters loadNormaPlantParameters(const config::ParameterSource& nod
   p.initial_psi = model.initial_psi;
   p.frame_prefix = node.text("frame_prefix").value_or("");
   p.max_actuator_effort = config::positiveNumber(node, "max_actuator_effort", p.max_actuator_effort);
+  p.odometry = config::loadOdometryParameters(node);
   return p;
 }
 
 NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : parameters_(loadNormaPlantParameters(RosParameterSource(pnh))),
       dynamics_(fromRobotDescription(nh, config::normaParametersFromUrdf), parameters_.variant),
+      odom_frame_(parameters_.frame_prefix + "odom"),
       base_frame_(parameters_.frame_prefix + "base_link"),
-      loop_(nh, pnh, loopDefaults()) {
+      loop_(nh, pnh, loopDefaults(odom_frame_)) {
   state_.psi = parameters_.initial_psi;
   state_pub_ = loop_.advertise<spherical_robots::NormaState>("norma_state");
   odom_pub_ = loop_.advertise<nav_msgs::Odometry>("odom");
@@ -78,18 +82,17 @@ void NormaPlantRos::publishEveryStep(const ros::Time& now, bool actuators_fresh)
 
 void NormaPlantRos::publishPeriodic(const ros::Time& now, bool /*actuators_fresh*/) {
   const Eigen::Vector3d centre(state_.x, state_.y, dynamics_.parameters().R);
-  const Eigen::Quaterniond heading(Eigen::AngleAxisd(state_.psi, Eigen::Vector3d::UnitZ()));
+  const Eigen::Quaterniond heading = yawRotation(state_.psi);
   const norma::PlanarRates rates = dynamics_.planarRates(state_.q, state_.qd, state_.psi);
   odom_pub_.publish(conversions::toOdometry(centre, heading, {rates.x_dot, rates.y_dot, 0.0},
-                                            {0.0, 0.0, rates.psi_dot}, kWorldFrame, base_frame_,
-                                            now));
-  loop_.tf().sendTransform(conversions::toTransform(centre, heading, kWorldFrame, base_frame_, now));
+                                            {0.0, 0.0, rates.psi_dot}, parameters_.odometry,
+                                            odom_frame_, base_frame_, now));
+  loop_.tf().sendTransform(conversions::toTransform(centre, heading, odom_frame_, base_frame_, now));
   joint_pub_.publish(conversions::normaJointState(state_, now));
 }
 
 std::optional<PlantModel::Pose> NormaPlantRos::trailPose() const {
-  return Pose{{state_.x, state_.y, 0.0},
-              Eigen::Quaterniond(Eigen::AngleAxisd(state_.psi, Eigen::Vector3d::UnitZ()))};
+  return Pose{{state_.x, state_.y, 0.0}, yawRotation(state_.psi)};
 }
 
 void NormaPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

@@ -64,7 +64,7 @@ int runTerrainCommand(const ParsedOptions& options, std::ostream& out) {
 const char* const kDescription =
     R"(The run starts at the origin with psi = phi = 0 and integrates the closed loop (the tracking
 law evaluated at every RK4 stage) with a fixed step. The scenario (surface, paths, the gains of
-both laws, RS tilt limit) is DIR/config/terrain.yaml; the sphere's radius is the base_link
+both laws, RS tilt limit) is DIR/config/terrain.yaml; the sphere's radius is the shell link's
 sphere of DIR/urdf/terrain_robot.urdf.
 
 --loop sampled runs the loop as the launched stack (launch/terrain_stack.launch, clock:=lockstep,
@@ -143,7 +143,7 @@ TerrainRun::TerrainRun(const TerrainRunSettings& settings) : settings_(settings)
                                                                    "/config/roller.yaml"));
   const config::LayeredParameterSource parameters(std::move(layers));
   const config::TerrainConfig scenario = config::loadTerrainConfig(parameters);
-  const double radius = radiusFromUrdf(settings.config_dir + "/urdf/terrain_robot.urdf");
+  const double radius = radiusFromUrdf(settings.config_dir + "/urdf/terrain_robot.urdf", "shell");
   surface_ = config::makeSurface(scenario.surface);
   path_ = config::makePath(settings.path, scenario);
   kinematics_ = std::make_unique<terrain::TerrainKinematics>(*surface_, settings.robot, radius,

@@ -28,6 +28,8 @@ struct NormaControllerParameters {
   double publish_rate = 50.0;   ///< [Hz] of tracking_error and target
   double max_stamp_skew = 1.0;  ///< [s] a state stamped further from the clock is rejected
   double input_timeout = 0.05;  ///< [s] older states and actuator states are stale
+  /// The frame of the odometry it reads, in which the path is (the stack's <prefix>odom).
+  std::string odom_frame = "odom";
 };
 
 /// @throw std::invalid_argument naming the parameter, its value and its limit.

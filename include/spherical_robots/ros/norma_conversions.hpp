@@ -35,13 +35,15 @@ sensor_msgs::JointState normaJointState(const norma::NormaState& state, const ro
 /// The actuators' command: T [N m] and F [N] as efforts.
 sensor_msgs::JointState normaEffortCommand(double torque, double force, const ros::Time& stamp);
 
-/// The error to the reference point of the path, in the plane z = 0 of kWorldFrame.
+/// The error to the reference point of the path, in the plane z = 0 of `frame` (the odometry's).
 /// @param error_norm, zeta what the controller computed for this state (|e| [m], ζ [rad]).
 spherical_robots::TrackingError toNormaTrackingErrorMsg(const norma::PathPoint& reference, double x,
                                                         double y, double error_norm, double zeta,
+                                                        const std::string& frame,
                                                         const ros::Time& stamp);
 
-/// One period [s] of the path of eq 52 in kWorldFrame, `samples` + 1 poses (closing the loop).
-nav_msgs::Path lissajousPathMsg(double period, int samples, const ros::Time& stamp);
+/// One period [s] of the path of eq 52 in `frame`, `samples` + 1 poses (closing the loop).
+nav_msgs::Path lissajousPathMsg(double period, int samples, const std::string& frame,
+                                const ros::Time& stamp);
 
 }  // namespace spherical_robots::conversions

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "spherical_robots/config/odometry_parameters.hpp"
 #include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/norma/norma_plant.hpp"
 #include "spherical_robots/ros/plant_loop.hpp"
@@ -15,9 +16,10 @@ namespace spherical_robots {
 /// Every private parameter of norma_plant but its loop's (PlantLoop; docs/nodes.md).
 struct NormaPlantParameters {
   norma::LagrangianVariant variant = norma::LagrangianVariant::kText;  ///< docs/errata.md
-  std::string frame_prefix;             ///< of every tf frame but world
+  std::string frame_prefix;             ///< of every tf frame but map
   double max_actuator_effort = 1e4;     ///< [N m or N] a measured effort beyond it is rejected
   double initial_psi = 0.0;             ///< [rad] the initial heading
+  config::OdometryParameters odometry;  ///< what odom claims: its covariances
 };
 
 /// @throw std::invalid_argument naming the parameter, its value and its limit.
@@ -41,6 +43,7 @@ class NormaPlantRos : private PlantModel {
 
   NormaPlantParameters parameters_;
   norma::NormaDynamics dynamics_;
+  std::string odom_frame_;
   std::string base_frame_;
   norma::NormaState state_;
   norma::Efforts measured_;  ///< the last good actuator state's efforts
