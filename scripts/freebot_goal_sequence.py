@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Sends a FreeBOT chain's default targets one after the other (launch/freebot_stack.launch).
 
-Private params: ~targets (list of [x, y, z, qw, qx, qy, qz] in world, or [x, y, z] for the
-position only), ~dwell [s] simulated between a verdict and the next target, ~loop (false).
+Private params: ~targets (list of [x, y, z, qw, qx, qy, qz] in ~frame, or [x, y, z] for the
+position only), ~frame (the chain's fixed base, <frame_prefix>link0; default link0), ~dwell [s]
+simulated between a verdict and the next target, ~loop (false).
 Publishes goal (geometry_msgs/PoseStamped) and waits for freebot_ik's verdict on goal_result
 (arrived, unreachable, rejected or aborted) before the next one.
 """
@@ -17,11 +18,11 @@ FINAL = (FreebotGoalResult.ARRIVED, FreebotGoalResult.UNREACHABLE, FreebotGoalRe
          FreebotGoalResult.ABORTED)
 
 
-def pose_of(target):
+def pose_of(target, frame):
     if len(target) not in (3, 7):
         raise ValueError('a target is [x, y, z] or [x, y, z, qw, qx, qy, qz], got %r' % (target,))
     goal = PoseStamped()
-    goal.header.frame_id = 'world'
+    goal.header.frame_id = frame
     goal.pose.position.x, goal.pose.position.y, goal.pose.position.z = target[:3]
     if len(target) == 7:  # else all zero: position only
         o = goal.pose.orientation
@@ -31,7 +32,8 @@ def pose_of(target):
 
 def main():
     rospy.init_node('goal_sequence')
-    goals = [pose_of(t) for t in rospy.get_param('~targets')]
+    frame = rospy.get_param('~frame', 'link0')
+    goals = [pose_of(t, frame) for t in rospy.get_param('~targets')]
     dwell = float(rospy.get_param('~dwell', 2.0))
     loop = bool(rospy.get_param('~loop', False))
     verdicts = []

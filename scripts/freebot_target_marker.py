@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
 """An interactive marker (Debian's python3-interactive-markers) to drag a FreeBOT chain's target
-in rviz: six rings and arrows in world; releasing the mouse publishes the pose on goal
+in rviz: six rings and arrows in the chain's base frame; releasing the mouse publishes the pose on goal
 (geometry_msgs/PoseStamped), which freebot_ik solves and drives to. The marker's server is
 `freebot_target` in the node's namespace (rviz: InteractiveMarkers, update topic
 freebot_target/update). It starts on ~initial ([x, y, z, qw, qx, qy, qz], Table II's A) and
 follows the goals others send (ik_target).
 
-Private params: ~initial, ~scale [m] (0.06), ~position_only (false: full pose goals).
+Private params: ~initial, ~scale [m] (0.06), ~position_only (false: full pose goals), ~frame (the
+chain's fixed base, <frame_prefix>link0, in which freebot_ik takes goals; default link0).
 """
 import rospy
 from geometry_msgs.msg import PoseStamped, Quaternion
@@ -32,11 +33,12 @@ def main():
     initial = rospy.get_param('~initial', [0.0036, 0.1636, 0.0924, 0.8610, 0.4687, 0.1356, 0.1437])
     scale = float(rospy.get_param('~scale', 0.06))
     position_only = bool(rospy.get_param('~position_only', False))
+    frame = rospy.get_param('~frame', 'link0')
     goal_pub = rospy.Publisher('goal', PoseStamped, queue_size=1)
     server = InteractiveMarkerServer(rospy.get_name().split('/')[-1])
 
     marker = InteractiveMarker()
-    marker.header.frame_id = 'world'
+    marker.header.frame_id = frame
     marker.name = 'target'
     marker.description = 'FreeBOT target (release to send)'
     marker.scale = scale
@@ -56,7 +58,7 @@ def main():
         if feedback.event_type != InteractiveMarkerFeedback.MOUSE_UP:
             return
         goal = PoseStamped()
-        goal.header.frame_id = 'world'
+        goal.header.frame_id = frame
         goal.header.stamp = rospy.Time.now()
         goal.pose = feedback.pose
         if position_only:

@@ -57,6 +57,7 @@ class FreebotStackCheck(unittest.TestCase):
         cls.radii = [float(r) for r in rospy.get_param('freebot/radii')]
         cls.modules = len(cls.radii) - 1
         cls.end_frame = cls.prefix + 'link%d' % cls.modules
+        cls.base_frame = cls.prefix + 'link0'
         cls.reachable = [float(v) for v in rospy.get_param('~reachable')]
         cls.unreachable = [float(v) for v in rospy.get_param('~unreachable')]
         cls.results = Recorder('goal_result', FreebotGoalResult)
@@ -70,8 +71,8 @@ class FreebotStackCheck(unittest.TestCase):
         wait_until(lambda: cls.goal_pub.get_num_connections() > 0, 'freebot_ik on goal')
 
     def end_effector(self):
-        """B_n's centre and orientation (w, x, y, z) in world, from tf."""
-        t = self.tf_buffer.lookup_transform('world', self.end_frame, rospy.Time(0),
+        """B_n's centre and orientation (w, x, y, z) in the base's frame, from tf."""
+        t = self.tf_buffer.lookup_transform(self.base_frame, self.end_frame, rospy.Time(0),
                                             rospy.Duration(10.0)).transform
         return ((t.translation.x, t.translation.y, t.translation.z),
                 (t.rotation.w, t.rotation.x, t.rotation.y, t.rotation.z))
@@ -80,7 +81,7 @@ class FreebotStackCheck(unittest.TestCase):
         """Publishes a goal and returns freebot_ik's final verdict on it."""
         count = self.results.count()
         goal = PoseStamped()
-        goal.header.frame_id = 'world'
+        goal.header.frame_id = self.base_frame
         goal.header.stamp = rospy.Time.now()
         goal.pose = pose_of(values)
         self.goal_pub.publish(goal)
@@ -98,6 +99,19 @@ class FreebotStackCheck(unittest.TestCase):
     def value(self, suffix, key):
         status = self.status(suffix)
         return next((pair.value for pair in status.values if pair.key == key), None) if status else None
+
+    def test_00_description_and_frames(self):
+        """robot_description is the chain of freebot/radii, sphere for sphere; the fixed base is
+        a frame of map (at the origin parameters, 0 by default), with no odometry."""
+        import xml.etree.ElementTree as ElementTree
+        robot = ElementTree.fromstring(rospy.get_param('robot_description'))
+        spheres = {link.get('name'): float(link.find('collision/geometry/sphere').get('radius'))
+                   for link in robot.findall('link')}
+        self.assertEqual(spheres, {'link%d' % i: r for i, r in enumerate(self.radii)})
+        base = self.tf_buffer.lookup_transform('map', self.base_frame, rospy.Time(0),
+                                               rospy.Duration(10.0)).transform
+        self.assertEqual((base.translation.x, base.translation.y, base.translation.z), (0.0, 0.0, 0.0))
+        self.assertFalse(self.tf_buffer.can_transform('map', self.prefix + 'odom', rospy.Time(0)))
 
     def test_01_service(self):
         """solve_ik: the reachable target within the solver's default tolerances, the other not,
@@ -207,7 +221,7 @@ class FreebotStackCheck(unittest.TestCase):
         commands = Recorder('actuators/command', JointState)
         count = self.results.count()
         goal = PoseStamped()
-        goal.header.frame_id = 'world'
+        goal.header.frame_id = self.base_frame
         goal.pose = pose_of(self.reachable)
         self.goal_pub.publish(goal)
         wait_until(lambda: any(r.status == FreebotGoalResult.MOVING for r in self.results.since(count)),

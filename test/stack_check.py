@@ -561,13 +561,29 @@ class NormaCheck(StackFixture):
         # from the last state.
         for joint, coordinate in zip((0, 1, 2, 3), (2, 0, 1, 3)):
             self.assertAlmostEqual(msg.position[joint], state.q[coordinate], delta=0.05)
-        for child in ('base_link', 'tilt_link', 'shell_link', 'pendulum_link', 'slider_link'):
-            transform = self.tf_buffer.lookup_transform('world', self.prefix + child,
+        for child in ('odom', 'base_link', 'tilt_link', 'shell_link', 'pendulum_link', 'slider_link'):
+            transform = self.tf_buffer.lookup_transform('map', self.prefix + child,
                                                         rospy.Time(0), rospy.Duration(10.0))
             t = transform.transform.translation
             self.assertTrue(all(math.isfinite(v) for v in (t.x, t.y, t.z)), child)
-        base = self.tf_buffer.lookup_transform('world', self.prefix + 'base_link', rospy.Time(0))
+        base = self.tf_buffer.lookup_transform(self.prefix + 'odom', self.prefix + 'base_link',
+                                               rospy.Time(0))
         self.assertAlmostEqual(base.transform.translation.z, self.radius, delta=1e-9)
+        # REP 105: odom's pose in <prefix>odom, gravity-aligned, its twist in base_link: eqs 6
+        # and 12 turned into {F_l}, forward R theta' cos(phi), leftward -R phi', of the state
+        # with the same stamp (an odom a few messages old: its state has surely come too).
+        wait_until(lambda: self.odom.count() > 10, '10 odom messages')
+        odom = self.odom.since(0)[-5]
+        self.assertEqual(odom.header.frame_id, self.prefix + 'odom')
+        self.assertEqual(odom.child_frame_id, self.prefix + 'base_link')
+        q = odom.pose.pose.orientation
+        self.assertEqual((q.x, q.y), (0.0, 0.0))
+        self.assertTrue(all(v > 0.0 for v in odom.pose.covariance[::7]))
+        same = next(m for m in reversed(self.norma_states.since(0))
+                    if m.header.stamp == odom.header.stamp)
+        self.assertAlmostEqual(odom.twist.twist.linear.x,
+                               self.radius * same.qd[0] * math.cos(same.q[2]), delta=1e-12)
+        self.assertAlmostEqual(odom.twist.twist.linear.y, -self.radius * same.qd[2], delta=1e-12)
 
     def test_03_bad_efforts_kill_nothing(self):
         publisher = rospy.Publisher('actuators/state', JointState, queue_size=10)

@@ -9,6 +9,7 @@
 
 #include "spherical_robots/FreebotState.h"
 #include "spherical_robots/config/freebot_config.hpp"
+#include "spherical_robots/config/freebot_description.hpp"
 #include "spherical_robots/ros/freebot_conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 
@@ -43,6 +44,8 @@ FreebotPlantRos::FreebotPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       state_(chain().alignedState()),
       wheels_(chain().moduleCount()),
       loop_(nh, pnh, loopDefaults(conversions::freebotLinkFrame(parameters_.frame_prefix, 0))) {
+  // For rviz's RobotModel and any other user: the very radii this node integrates.
+  nh.setParam("robot_description", config::freebotRobotDescription(chain().manipulator().radii()));
   state_pub_ = loop_.advertise<spherical_robots::FreebotState>("freebot_state");
   marker_pub_ = loop_.advertise<visualization_msgs::MarkerArray>("freebot_markers");
   std::ostringstream radii;
