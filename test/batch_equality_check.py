@@ -94,7 +94,11 @@ def terrain_case(duration, extra_args, stack='terrain'):
 
 
 def norma_case(duration, extra_args):
+    from nav_msgs.msg import Odometry
     from spherical_robots.msg import NormaState
+    # odom first: the topic whose subscribers time waits for, so this checker sees every state.
+    odom_fields = [('pose.position.x', lambda m: m.pose.pose.position.x, 'X', 'm'),
+                   ('pose.position.y', lambda m: m.pose.pose.position.y, 'Y', 'm')]
     fields = [('x', lambda m: m.x, 'X', 'm'), ('y', lambda m: m.y, 'Y', 'm'),
               ('psi', lambda m: m.psi, 'psi', 'rad')]
     for i, (coordinate, unit) in enumerate([('theta', 'rad'), ('alpha', 'rad'), ('phi', 'rad'),
@@ -104,7 +108,8 @@ def norma_case(duration, extra_args):
     return StackCase(
         launch='norma_stack.launch',
         launch_args=['controller:=tracking', 'duration:=%g' % duration],
-        ns=launch_value(extra_args, 'ns', 'norma'), topics=[('norma_state', NormaState, fields)],
+        ns=launch_value(extra_args, 'ns', 'norma'),
+        topics=[('odom', Odometry, odom_fields), ('norma_state', NormaState, fields)],
         sphere_sim_args=['norma', '--loop', 'sampled', '--controller', 'tracking',
                          '--duration', '%g' % duration, '--log-rate', '1000'])
 

@@ -670,9 +670,50 @@ class OdometryFeedbackCheck(StackFixture):
         assert_tracking(self, Recorder('tracking_error', TrackingError))
 
 
+class SensorsCheck(StackFixture):
+    """mode:=sensors: the plant's seeded odometry noise and IMU (config/sensors_noisy.yaml, loaded
+    into its private namespace): odom scatters about the true centre (terrain_state's, same
+    stamp) with the configured deviation and claims it in its covariance; the IMU comes at its
+    rate and reads gravity, +9.81 m/s^2 up, on average; the loop closed through this sensing still
+    tracks, |e_t| over 40-60 s below ~mean_bound and ~max_bound [m]."""
+
+    def test_01_odometry_scatters_as_configured(self):
+        sigma = float(rospy.get_param('terrain_plant/noise/position'))
+        wait_until(lambda: self.odom.count() >= 500, '500 odom messages')
+        truth = {m.header.stamp: m.centre for m in self.states.since(0)}
+        deviations = [getattr(m.pose.pose.position, a) - getattr(truth[m.header.stamp], a)
+                      for m in self.odom.since(0) if m.header.stamp in truth for a in 'xyz']
+        self.assertGreater(len(deviations), 1000)
+        mean = sum(deviations) / len(deviations)
+        deviation = math.sqrt(sum((d - mean) ** 2 for d in deviations) / len(deviations))
+        rospy.loginfo('odom - truth: mean %.3g m, deviation %.4g m over %d components (sigma %g m)',
+                      mean, deviation, len(deviations), sigma)
+        self.assertLess(abs(mean), 4.0 * sigma / math.sqrt(len(deviations)))
+        self.assertAlmostEqual(deviation, sigma, delta=0.1 * sigma)
+        self.assertAlmostEqual(self.odom.last().pose.covariance[0], 1e-6 + sigma ** 2, delta=1e-12)
+
+    def test_02_imu_reads_gravity(self):
+        from sensor_msgs.msg import Imu
+        rate = float(rospy.get_param('terrain_plant/imu_rate'))
+        imu = Recorder('imu', Imu)
+        wait_until(lambda: imu.count() >= 200, '200 imu messages')
+        readings = imu.since(0)
+        span = (readings[-1].header.stamp - readings[0].header.stamp).to_sec()
+        self.assertAlmostEqual((len(readings) - 1) / span, rate, delta=0.01 * rate)
+        self.assertEqual(readings[-1].header.frame_id, self.prefix + 'base_link')
+        up = sum(m.linear_acceleration.z for m in readings) / len(readings)
+        rospy.loginfo('imu: %d readings at %.1f Hz, mean specific force up %.4f m/s^2',
+                      len(readings), (len(readings) - 1) / span, up)
+        self.assertAlmostEqual(up, 9.81, delta=0.05)
+
+    def test_03_tracking_through_noisy_odometry(self):
+        assert_tracking(self, Recorder('tracking_error', TrackingError))
+
+
 if __name__ == '__main__':
     rospy.init_node(NAME)
     mode = rospy.get_param('~mode', 'tracking')
     rostest.rosrun(PKG, NAME, {'teleop': TeleopCheck, 'seam': SeamCheck, 'roller': RollerCheck,
                                'norma': NormaCheck, 'odometry': OdometryFeedbackCheck,
+                               'sensors': SensorsCheck,
                                'smoothness': SmoothnessCheck}.get(mode, TrackingCheck))

@@ -123,7 +123,7 @@ TEST(OdometryConversion, BodyPoseRoundTripsExactly) {
   const sr::terrain::BodyFrame frame(surface, 0.2);
   const sr::terrain::BodyPose pose =
       frame.pose(sr::terrain::contactGeometry(surface, 0.2, {0.7, -0.4, 2.9, 0.0}));
-  const auto msg = conv::bodyOdometry(pose.centre, pose.orientation, {}, {}, {}, "sphere/odom",
+  const auto msg = conv::bodyOdometry({pose.centre, pose.orientation, {}, {}}, {}, "sphere/odom",
                                       "sphere/base_link", ros::Time(2.0));
   const sr::terrain::BodyPose back = conv::bodyPoseFromOdometry(msg, kMaxPosition);
   EXPECT_EQ(back.centre, pose.centre);

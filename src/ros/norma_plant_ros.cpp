@@ -1,6 +1,5 @@
 #include "spherical_robots/ros/norma_plant_ros.hpp"
 
-#include <nav_msgs/Odometry.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -51,7 +50,7 @@ NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       loop_(nh, pnh, loopDefaults(odom_frame_)) {
   state_.psi = parameters_.initial_psi;
   state_pub_ = loop_.advertise<spherical_robots::NormaState>("norma_state");
-  odom_pub_ = loop_.advertise<nav_msgs::Odometry>("odom");
+  odometry_.emplace(loop_, parameters_.odometry, odom_frame_, base_frame_);
   joint_pub_ = loop_.advertise<sensor_msgs::JointState>("joint_states");
   const auto& p = dynamics_.parameters();
   ROS_INFO_STREAM("Norma: R = " << p.R << " m, L = " << p.L << " m, L0 = " << p.L0
@@ -59,7 +58,7 @@ NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
                                 << p.m_shell << ", shaft " << p.m_shaft << ", pendulum "
                                 << p.m_pendulum << ", slider " << p.m_slider << " kg; step "
                                 << loop_.step() << " s");
-  loop_.start(*this, state_pub_);
+  loop_.start(*this, odometry_->odom());
 }
 
 void NormaPlantRos::read(const sensor_msgs::JointState& actuators) {
@@ -74,21 +73,27 @@ void NormaPlantRos::advance(double elapsed, bool actuators_fresh) {
                                         loop_.step());
 }
 
+// The controller's feedback, odom and joint_states, at every step: the paper's inner loop needs
+// the 1 kHz (docs/conventions.md).
 void NormaPlantRos::publishEveryStep(const ros::Time& now, bool actuators_fresh) {
+  const norma::PlanarRates rates = dynamics_.planarRates(state_.q, state_.qd, state_.psi);
+  const BodyMotion motion = bodyMotion(centre(), yawRotation(state_.psi), {rates.x_dot, rates.y_dot, 0.0},
+                                       {0.0, 0.0, rates.psi_dot});
+  odometry_->publish(now, motion);
+  if (odometry_->imuDue(now)) odometry_->publishImu(now, motion);
+  joint_pub_.publish(conversions::normaJointState(state_, now));
   state_pub_.publish(conversions::toNormaStateMsg(
       state_, norma::drivingEfforts(measured_, actuators_fresh),
       dynamics_.totalEnergy(state_.q, state_.qd), now));
 }
 
 void NormaPlantRos::publishPeriodic(const ros::Time& now, bool /*actuators_fresh*/) {
-  const Eigen::Vector3d centre(state_.x, state_.y, dynamics_.parameters().R);
-  const Eigen::Quaterniond heading = yawRotation(state_.psi);
-  const norma::PlanarRates rates = dynamics_.planarRates(state_.q, state_.qd, state_.psi);
-  odom_pub_.publish(conversions::toOdometry(centre, heading, {rates.x_dot, rates.y_dot, 0.0},
-                                            {0.0, 0.0, rates.psi_dot}, parameters_.odometry,
-                                            odom_frame_, base_frame_, now));
-  loop_.tf().sendTransform(conversions::toTransform(centre, heading, odom_frame_, base_frame_, now));
-  joint_pub_.publish(conversions::normaJointState(state_, now));
+  loop_.tf().sendTransform(
+      conversions::toTransform(centre(), yawRotation(state_.psi), odom_frame_, base_frame_, now));
+}
+
+Eigen::Vector3d NormaPlantRos::centre() const {
+  return {state_.x, state_.y, dynamics_.parameters().R};
 }
 
 std::optional<PlantModel::Pose> NormaPlantRos::trailPose() const {

@@ -1,6 +1,5 @@
 #include "spherical_robots/ros/rotor_plant_ros.hpp"
 
-#include <nav_msgs/Odometry.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -47,11 +46,11 @@ RotorPlantRos::RotorPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       odom_frame_(parameters_.frame_prefix + "odom"),
       base_frame_(parameters_.frame_prefix + "base_link"),
       loop_(nh, pnh, loopDefaults(odom_frame_)) {
-  odom_pub_ = loop_.advertise<nav_msgs::Odometry>("odom");
+  odometry_.emplace(loop_, parameters_.odometry, odom_frame_, base_frame_);
   joint_pub_ = loop_.advertise<sensor_msgs::JointState>("joint_states");
   ROS_INFO_STREAM("rotor sphere: R = " << parameters_.sphere_radius << " m, k = " << parameters_.inertia_ratio << ", J_zz/J_r = "
                                        << parameters_.rotor_inertia_scale << "; step " << loop_.step() << " s");
-  loop_.start(*this, odom_pub_);
+  loop_.start(*this, odometry_->odom());
 }
 
 void RotorPlantRos::read(const sensor_msgs::JointState& actuators) {
@@ -94,9 +93,12 @@ void RotorPlantRos::publishPeriodic(const ros::Time& now, bool actuators_fresh) 
   } catch (const std::invalid_argument&) {
     // Counted by the loop's failed step; the pose is still worth publishing.
   }
-  odom_pub_.publish(conversions::toOdometry(centre, attitude,
-                                            {parameters_.sphere_radius * rates.u_a, parameters_.sphere_radius * rates.v_a, 0.0}, omega,
-                                            parameters_.odometry, odom_frame_, base_frame_, now));
+  const BodyMotion motion = bodyMotion(
+      centre, attitude, {parameters_.sphere_radius * rates.u_a, parameters_.sphere_radius * rates.v_a, 0.0},
+      omega);
+  odometry_->publish(now, motion);
+  // The IMU at the odometry's rate at most (the plant computes its motion only then).
+  if (odometry_->imuDue(now)) odometry_->publishImu(now, motion);
   loop_.tf().sendTransform(conversions::toTransform(centre, attitude, odom_frame_, base_frame_, now));
   joint_pub_.publish(conversions::jointState(kRotors, {positions_[0], positions_[1]},
                                              {speeds.phi1, speeds.phi2}, {}, now));

@@ -1,6 +1,5 @@
 #include "spherical_robots/ros/terrain_plant_ros.hpp"
 
-#include <nav_msgs/Odometry.h>
 #include <sensor_msgs/JointState.h>
 #include <visualization_msgs/Marker.h>
 
@@ -66,7 +65,7 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   state_.psi = parameters_.initial_psi;
   orientation_ = Eigen::Quaterniond(kinematics_->geometry(state_).heading_frame);
 
-  odom_pub_ = loop_.advertise<nav_msgs::Odometry>("odom");
+  odometry_.emplace(loop_, parameters_.odometry, odom_frame_, base_frame_);
   if (parameters_.robot_type == terrain::RobotType::RollingAndSteering)
     joint_pub_ = loop_.advertise<sensor_msgs::JointState>("joint_states");
   state_pub_ = loop_.advertise<spherical_robots::TerrainState>("terrain_state");
@@ -78,7 +77,7 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
                                            << terrain::toString(model) << " contact model, on "
                                            << surface_->describe() << "; frames " << odom_frame_ << " -> "
                                            << base_frame_ << " -> " << shell_frame_ << ", " << heading_frame_);
-  loop_.start(*this, odom_pub_);
+  loop_.start(*this, odometry_->odom());
 }
 
 void TerrainPlantRos::read(const sensor_msgs::JointState& actuators) {
@@ -101,18 +100,30 @@ void TerrainPlantRos::advance(double elapsed, bool actuators_fresh) {
   orientation_ = next.orientation;
 }
 
-void TerrainPlantRos::publishPeriodic(const ros::Time& now, bool actuators_fresh) {
-  const terrain::ContactGeometry geometry = kinematics_->geometry(state_);
-  const terrain::DriveRates realised = kinematics_->realisedRates(state_, rates(actuators_fresh));
+BodyMotion TerrainPlantRos::exactMotion(const terrain::ContactGeometry& geometry,
+                                       const terrain::DriveRates& realised) const {
   const terrain::BodyPose body = terrain::BodyFrame::pose(geometry);
   const terrain::BodyTwist twist =
       body_frame_->twist(geometry, kinematics_->realisedStateRate(state_, geometry, realised));
-  odom_pub_.publish(conversions::bodyOdometry(body.centre, body.orientation, twist.linear, twist.angular,
-                                              parameters_.odometry, odom_frame_, base_frame_, now));
-  // The shell and the heading frame (at P0) under the body, which does not roll.
-  const Eigen::Quaterniond body_from_odom = body.orientation.conjugate();
+  return {body.centre, body.orientation, twist.linear, twist.angular};
+}
+
+void TerrainPlantRos::publishEveryStep(const ros::Time& now, bool actuators_fresh) {
+  if (!odometry_->imuDue(now)) return;
+  odometry_->publishImu(now, exactMotion(kinematics_->geometry(state_),
+                                         kinematics_->realisedRates(state_, rates(actuators_fresh))));
+}
+
+void TerrainPlantRos::publishPeriodic(const ros::Time& now, bool actuators_fresh) {
+  const terrain::ContactGeometry geometry = kinematics_->geometry(state_);
+  const terrain::DriveRates realised = kinematics_->realisedRates(state_, rates(actuators_fresh));
+  const BodyMotion motion = exactMotion(geometry, realised);
+  odometry_->publish(now, motion);
+  // tf is the simulated truth, also with noisy odometry. The shell and the heading frame (at P0)
+  // under the body, which does not roll.
+  const Eigen::Quaterniond body_from_odom = motion.orientation.conjugate();
   loop_.tf().sendTransform(
-      {conversions::toTransform(body.centre, body.orientation, odom_frame_, base_frame_, now),
+      {conversions::toTransform(motion.position, motion.orientation, odom_frame_, base_frame_, now),
        conversions::toTransform(Eigen::Vector3d::Zero(), body_from_odom * orientation_, base_frame_,
                                 shell_frame_, now),
        conversions::toTransform(body_from_odom * (geometry.contact_point - geometry.centre),

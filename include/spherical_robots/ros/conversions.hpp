@@ -16,6 +16,7 @@
 #include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
 #include <ros/time.h>
+#include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 #include <visualization_msgs/Marker.h>
 
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include "spherical_robots/config/odometry_parameters.hpp"
+#include "spherical_robots/core/simulated_sensors.hpp"
 #include "spherical_robots/core/stamp.hpp"
 #include "spherical_robots/terrain/teleop.hpp"
 
@@ -76,21 +78,14 @@ geometry_msgs::PoseStamped toPoseStamped(const Eigen::Vector3d& position,
 
 /// REP 105 odometry, every field copied as given: the pose of `child` in `frame` (the orientation
 /// not normalised, so that a reader sees the very doubles the core computed), its twist in
-/// `child`'s axes, and diagonal covariances (`odometry` parameters).
-/// @param body_linear, body_angular [m/s], [rad/s] in `child`'s axes.
-nav_msgs::Odometry bodyOdometry(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
-                                const Eigen::Vector3d& body_linear, const Eigen::Vector3d& body_angular,
-                                const config::OdometryParameters& odometry, const std::string& frame,
-                                const std::string& child, const ros::Time& stamp);
+/// `child`'s axes, and the covariance diagonals of `odometry`.
+nav_msgs::Odometry bodyOdometry(const BodyMotion& motion, const config::OdometryParameters& odometry,
+                                const std::string& frame, const std::string& child,
+                                const ros::Time& stamp);
 
-/// bodyOdometry with the velocities given in `frame`'s axes, turned into `child`'s by the
-/// orientation, which must be a unit quaternion.
-/// @param linear_velocity, angular_velocity [m/s], [rad/s] in `frame`'s axes.
-nav_msgs::Odometry toOdometry(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
-                              const Eigen::Vector3d& linear_velocity,
-                              const Eigen::Vector3d& angular_velocity,
-                              const config::OdometryParameters& odometry, const std::string& frame,
-                              const std::string& child, const ros::Time& stamp);
+/// An IMU's reading in `frame` (the body's), with the covariance diagonals of `odometry`.
+sensor_msgs::Imu toImu(const ImuReading& reading, const config::OdometryParameters& odometry,
+                       const std::string& frame, const ros::Time& stamp);
 
 // --- Drive rates <-> actuators -----------------------------------------------------------------
 
@@ -104,6 +99,10 @@ std::vector<double> velocitiesByName(const sensor_msgs::JointState& msg,
 /// max_effort.
 std::vector<double> effortsByName(const sensor_msgs::JointState& msg,
                                   const std::vector<std::string>& names, double max_effort);
+
+/// The position of each named joint in msg, as velocitiesByName, bounded by max_position.
+std::vector<double> positionsByName(const sensor_msgs::JointState& msg,
+                                    const std::vector<std::string>& names, double max_position);
 
 /// A JointState with these names and values (an empty list: the message leaves that field empty).
 sensor_msgs::JointState jointState(const std::vector<std::string>& names,

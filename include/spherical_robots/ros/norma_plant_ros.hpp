@@ -9,6 +9,7 @@
 #include "spherical_robots/config/odometry_parameters.hpp"
 #include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/norma/norma_plant.hpp"
+#include "spherical_robots/ros/odometry_publisher.hpp"
 #include "spherical_robots/ros/plant_loop.hpp"
 
 namespace spherical_robots {
@@ -19,7 +20,7 @@ struct NormaPlantParameters {
   std::string frame_prefix;             ///< of every tf frame but map
   double max_actuator_effort = 1e4;     ///< [N m or N] a measured effort beyond it is rejected
   double initial_psi = 0.0;             ///< [rad] the initial heading
-  config::OdometryParameters odometry;  ///< what odom claims: its covariances
+  config::OdometryParameters odometry;  ///< odom's covariances, noise; the IMU
 };
 
 /// @throw std::invalid_argument naming the parameter, its value and its limit.
@@ -40,6 +41,8 @@ class NormaPlantRos : private PlantModel {
   std::optional<Pose> trailPose() const override;
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) override;
   std::string describeState() const override;
+  /// The sphere's centre in odom [m].
+  Eigen::Vector3d centre() const;
 
   NormaPlantParameters parameters_;
   norma::NormaDynamics dynamics_;
@@ -48,7 +51,7 @@ class NormaPlantRos : private PlantModel {
   norma::NormaState state_;
   norma::Efforts measured_;  ///< the last good actuator state's efforts
   LoopPublisher state_pub_;
-  LoopPublisher odom_pub_;
+  std::optional<OdometryPublisher> odometry_;  ///< made once loop_ is
   LoopPublisher joint_pub_;
   PlantLoop loop_;  ///< last: its clock stops before the rest goes
 };

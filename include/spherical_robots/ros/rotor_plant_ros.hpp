@@ -4,10 +4,12 @@
 // as odometry, tf and the rotors' joint states.
 
 #include <array>
+#include <optional>
 #include <string>
 
 #include "spherical_robots/config/odometry_parameters.hpp"
 #include "spherical_robots/config/parameter_source.hpp"
+#include "spherical_robots/ros/odometry_publisher.hpp"
 #include "spherical_robots/ros/plant_loop.hpp"
 #include "spherical_robots/rotor/contact_kinematics.hpp"
 #include "spherical_robots/rotor/dynamic_realizability.hpp"
@@ -21,7 +23,7 @@ struct RotorPlantParameters {
   double sphere_radius = 0.1;          ///< R [m]
   std::string frame_prefix;            ///< of every tf frame but map
   double max_actuator_rate = 1000.0;   ///< [rad/s] a measured rate beyond it is rejected
-  config::OdometryParameters odometry;  ///< what odom claims: its covariances
+  config::OdometryParameters odometry;  ///< odom's covariances, noise; the IMU
 };
 
 /// stack: the stack's namespace (inertia_ratio, rotor_inertia_scale); node: the private one.
@@ -49,7 +51,7 @@ class RotorPlantRos : private PlantModel {
   rotor::ContactCoordinates state_;
   rotor::RotorSpeeds speeds_;  ///< measured [rad/s]
   std::array<double, 2> positions_{};  ///< measured rotor angles [rad], for the URDF joints
-  LoopPublisher odom_pub_;
+  std::optional<OdometryPublisher> odometry_;  ///< made once loop_ is
   LoopPublisher joint_pub_;
   PlantLoop loop_;  ///< last: its clock stops before the rest goes
 };

@@ -9,6 +9,7 @@
 
 #include "spherical_robots/config/odometry_parameters.hpp"
 #include "spherical_robots/config/parameter_source.hpp"
+#include "spherical_robots/ros/odometry_publisher.hpp"
 #include "spherical_robots/ros/plant_loop.hpp"
 #include "spherical_robots/terrain/body_frame.hpp"
 #include "spherical_robots/terrain/surface.hpp"
@@ -27,7 +28,7 @@ struct TerrainPlantParameters {
   double initial_psi = 0.0;           ///< [rad]
   double marker_half_extent = 3.0;    ///< [m] the terrain mesh spans [-e, e]^2
   double marker_resolution = 0.1;     ///< [m]
-  config::OdometryParameters odometry;  ///< what odom claims: its covariances
+  config::OdometryParameters odometry;  ///< odom's covariances, noise; the IMU
 };
 
 /// @throw std::invalid_argument naming the parameter, its value and its limit.
@@ -43,12 +44,15 @@ class TerrainPlantRos : private PlantModel {
  private:
   void read(const sensor_msgs::JointState& actuators) override;
   void advance(double elapsed, bool actuators_fresh) override;
+  void publishEveryStep(const ros::Time& now, bool actuators_fresh) override;
   void publishPeriodic(const ros::Time& now, bool actuators_fresh) override;
   std::optional<Pose> trailPose() const override;
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) override;
   std::string describeState() const override;
 
   terrain::DriveRates rates(bool actuators_fresh) const;
+  /// base_link's exact pose and twist at the current state with these realised rates.
+  BodyMotion exactMotion(const terrain::ContactGeometry& geometry, const terrain::DriveRates& realised) const;
 
   TerrainPlantParameters parameters_;
   std::string odom_frame_;
@@ -62,7 +66,7 @@ class TerrainPlantRos : private PlantModel {
   Eigen::Quaterniond orientation_;  ///< the shell's, odom <- shell
   terrain::DriveRates measured_;
   ros::Publisher marker_pub_;
-  LoopPublisher odom_pub_;
+  std::optional<OdometryPublisher> odometry_;  ///< made once loop_ is
   LoopPublisher joint_pub_;  ///< RS only: its tilt
   LoopPublisher state_pub_;
   PlantLoop loop_;  ///< last: its clock stops before the rest goes
