@@ -25,11 +25,12 @@
 # play would deliver terrain_state earlier than the live controller saw it. Latched messages and
 # messages stamped 0 keep their recorded time.
 set -euo pipefail
-. "$(dirname "${BASH_SOURCE[0]}")/env.sh"
+. "$(dirname "${BASH_SOURCE[0]}")/../scripts/env.sh"
 stack=${1:?usage: $0 terrain|roller|norma|rotor|freebot [OUT.bag] [DURATION]}
 case $stack in
   terrain) ns=sphere; default=terrain_3R_circle_fixture.bag
-           launch=(terrain_stack.launch robot:=3R path:=circle model:=paper speedup:=10)
+           # the paper's law: test/controller_bag_regression.test derives its tolerances from eq 55
+           launch=(terrain_stack.launch robot:=3R path:=circle model:=paper law:=paper speedup:=10)
            keep="odom terrain_state tracking_error actuators/command target desired_path trail terrain_marker" ;;
   roller)  ns=roller; default=roller_2R_circle_fixture.bag
            launch=(roller_stack.launch path:=circle speedup:=10)

@@ -25,6 +25,11 @@ BodyMotion someMotion() {
           Eigen::Vector3d(0.2, 0.0, -0.01), Eigen::Vector3d(0.0, 0.0, 0.3)};
 }
 
+/// Noise on every part, each its own deviation.
+SensorNoise everyNoise(std::uint32_t seed) {
+  return {0.01, 0.02, 0.03, 0.04, 0.1, seed};
+}
+
 TEST(SimulatedSensors, WithoutNoiseTheOdometryIsTheTruthToTheBit) {
   SimulatedSensors sensors({});
   const BodyMotion truth = someMotion();
@@ -39,12 +44,7 @@ TEST(SimulatedSensors, WithoutNoiseTheOdometryIsTheTruthToTheBit) {
 }
 
 TEST(SimulatedSensors, NoiseHasTheConfiguredDeviationAndRepeatsWithItsSeed) {
-  SensorNoise noise;
-  noise.position = 0.01;
-  noise.yaw = 0.02;
-  noise.linear_velocity = 0.03;
-  noise.angular_velocity = 0.04;
-  noise.seed = 42;
+  const SensorNoise noise = everyNoise(42);
   SimulatedSensors sensors(noise), again(noise);
   const BodyMotion truth = someMotion();
   constexpr int kDraws = 20000;
@@ -66,20 +66,16 @@ TEST(SimulatedSensors, NoiseHasTheConfiguredDeviationAndRepeatsWithItsSeed) {
     const double dv = odometry.linear.y() - truth.linear.y();
     twist_squares += dv * dv;
   }
-  // Standard errors: the mean's sigma / sqrt(N) = 7e-5 m; the deviation's about sigma / sqrt(2N).
-  EXPECT_NEAR(sum / kDraws, 0.0, 4.0 * 0.01 / std::sqrt(kDraws));
-  EXPECT_NEAR(std::sqrt(squares / kDraws), 0.01, 4.0 * 0.01 / std::sqrt(2.0 * kDraws));
-  EXPECT_NEAR(std::sqrt(yaw_squares / kDraws), 0.02, 4.0 * 0.02 / std::sqrt(2.0 * kDraws));
-  EXPECT_NEAR(std::sqrt(twist_squares / kDraws), 0.03, 4.0 * 0.03 / std::sqrt(2.0 * kDraws));
+  // Standard errors: the mean's sigma / sqrt(N); the deviation's about sigma / sqrt(2N).
+  const double spread = 4.0 / std::sqrt(2.0 * kDraws);  // four standard errors, relative
+  EXPECT_NEAR(sum / kDraws, 0.0, 4.0 * noise.position / std::sqrt(kDraws));
+  EXPECT_NEAR(std::sqrt(squares / kDraws), noise.position, spread * noise.position);
+  EXPECT_NEAR(std::sqrt(yaw_squares / kDraws), noise.yaw, spread * noise.yaw);
+  EXPECT_NEAR(std::sqrt(twist_squares / kDraws), noise.linear_velocity, spread * noise.linear_velocity);
 }
 
 TEST(SimulatedSensors, TheImuLeavesTheOdometrysDrawsAsTheyWere) {
-  SensorNoise noise;
-  noise.position = 0.01;
-  noise.angular_velocity = 0.02;
-  noise.linear_acceleration = 0.1;
-  noise.seed = 3;
-  SimulatedSensors with_imu(noise), without(noise);
+  SimulatedSensors with_imu(everyNoise(3)), without(everyNoise(3));
   const BodyMotion truth = someMotion();
   for (int i = 0; i < 100; ++i) {
     with_imu.imu(0.01 * i, truth);
