@@ -272,6 +272,11 @@ DOMAINS = {
     'actuator_models': ActuatorModels(),
     'nodelet': BOOLEAN,
     'wait_for_subscribers': Number(minimum=0, whole=True),
+    'odom': Pattern(r'^/?%s(/%s)*$' % (NAME, NAME), 'a topic name, relative or absolute, e.g. odom or /ekf/odom'),
+    'origin_x': Number(unit='m'),
+    'origin_y': Number(unit='m'),
+    'origin_yaw': Number(unit='rad'),
+    'sensors': Optional(ExistingFile('a YAML file of odometry noise and IMU settings')),
     # Norma
     'controller': Choice('paper', 'tracking'),
     'variant': Choice('text', 'appendix'),

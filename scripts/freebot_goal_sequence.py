@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Sends a FreeBOT chain's default targets one after the other (launch/freebot_stack.launch).
 
-Private params: ~targets (list of [x, y, z, qw, qx, qy, qz] in world, or [x, y, z] for the
-position only), ~dwell [s] simulated between a verdict and the next target, ~loop (false).
+Private params: ~targets (list of [x, y, z, qw, qx, qy, qz] in ~frame, or [x, y, z] for the
+position only), ~frame (the chain's fixed base, <frame_prefix>link0; default link0), ~dwell [s]
+simulated between a verdict and the next target, ~loop (false).
 A client of freebot_ik's move_freebot action (spherical_robots/MoveFreebotAction): each target is
 a goal, and the next one waits for its result (arrived, unreachable, rejected or aborted).
 """
@@ -13,14 +14,12 @@ import rospy
 
 from spherical_robots.msg import MoveFreebotAction, MoveFreebotGoal
 
-WORLD_FRAME = 'world'
 
-
-def goal_of(target):
+def goal_of(target, frame):
     if len(target) not in (3, 7):
         raise ValueError('a target is [x, y, z] or [x, y, z, qw, qx, qy, qz], got %r' % (target,))
     goal = MoveFreebotGoal()
-    goal.target.header.frame_id = WORLD_FRAME
+    goal.target.header.frame_id = frame
     pose = goal.target.pose
     pose.position.x, pose.position.y, pose.position.z = target[:3]
     if len(target) == 7:  # else all zero: position only
@@ -31,7 +30,8 @@ def goal_of(target):
 
 def main():
     rospy.init_node('goal_sequence')
-    goals = [goal_of(t) for t in rospy.get_param('~targets')]
+    frame = rospy.get_param('~frame', 'link0')
+    goals = [goal_of(t, frame) for t in rospy.get_param('~targets')]
     dwell = float(rospy.get_param('~dwell', 2.0))
     loop = bool(rospy.get_param('~loop', False))
     client = actionlib.SimpleActionClient('move_freebot', MoveFreebotAction)

@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """An interactive marker (Debian's python3-interactive-markers) to drag a FreeBOT chain's target
-in rviz: six rings and arrows in world; releasing the mouse sends the pose as a goal of
-freebot_ik's move_freebot action (a newer goal preempts the one in force), which freebot_ik solves
-and drives to; its result is logged. The marker's server is
+in rviz: six rings and arrows in the chain's base frame; releasing the mouse sends the pose as a
+goal of freebot_ik's move_freebot action (a newer goal preempts the one in force), which
+freebot_ik solves and drives to; its result is logged. The marker's server is
 `freebot_target` in the node's namespace (rviz: InteractiveMarkers, update topic
 freebot_target/update). It starts on ~initial ([x, y, z, qw, qx, qy, qz], Table II's A) and
 follows the goals freebot_ik takes from any client (ik_target).
 
-Private params: ~initial, ~scale [m] (0.06), ~position_only (false: full pose goals).
+Private params: ~initial, ~scale [m] (0.06), ~position_only (false: full pose goals), ~frame (the
+chain's fixed base, <frame_prefix>link0, in which freebot_ik takes goals; default link0).
 """
 import actionlib
 import rospy
@@ -17,8 +18,6 @@ from visualization_msgs.msg import InteractiveMarker, InteractiveMarkerControl, 
     InteractiveMarkerFeedback, Marker
 
 from spherical_robots.msg import MoveFreebotAction, MoveFreebotGoal
-
-WORLD_FRAME = 'world'
 
 
 def axis_controls(marker):
@@ -38,11 +37,12 @@ def main():
     initial = rospy.get_param('~initial', [0.0036, 0.1636, 0.0924, 0.8610, 0.4687, 0.1356, 0.1437])
     scale = float(rospy.get_param('~scale', 0.06))
     position_only = bool(rospy.get_param('~position_only', False))
+    frame = rospy.get_param('~frame', 'link0')
     client = actionlib.SimpleActionClient('move_freebot', MoveFreebotAction)
     server = InteractiveMarkerServer(rospy.get_name().split('/')[-1])
 
     marker = InteractiveMarker()
-    marker.header.frame_id = WORLD_FRAME
+    marker.header.frame_id = frame
     marker.name = 'target'
     marker.description = 'FreeBOT target (release to send)'
     marker.scale = scale
@@ -62,7 +62,7 @@ def main():
         if feedback.event_type != InteractiveMarkerFeedback.MOUSE_UP:
             return
         goal = MoveFreebotGoal()
-        goal.target.header.frame_id = WORLD_FRAME
+        goal.target.header.frame_id = frame
         goal.target.header.stamp = rospy.Time.now()
         goal.target.pose = feedback.pose
         if position_only:

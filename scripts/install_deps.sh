@@ -24,6 +24,7 @@ packages=(
   libpng-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev googletest libbenchmark-dev librostest-dev python3-rostest catkin-lint
+  topic-tools
   # running stacks, bags, plots, rviz
   python3-rospy python3-roslaunch python3-rosbag python3-rosnode python3-rostopic rosbash
   python3-nav-msgs python3-geometry-msgs python3-sensor-msgs python3-diagnostic-msgs

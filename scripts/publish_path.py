@@ -22,8 +22,9 @@ import rospy
 from geometry_msgs.msg import PoseStamped
 from nav_msgs.msg import Path
 
-# pure_pursuit_controller's fixed frame (kWorldFrame in include/spherical_robots/ros/conversions.hpp).
-FIXED_FRAME = 'world'
+# REP 105's fixed frame, shared by every stack on a master; pure_pursuit_controller transforms a
+# path into its <prefix>odom through tf (a static map -> odom in each stack).
+DEFAULT_FRAME = 'map'
 
 
 def read_rows(path):
@@ -79,7 +80,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
     parser.add_argument('file', help='CSV file: t,x,y or x,y rows')
     parser.add_argument('--topic', default='path', help='topic (default: path, in the node\'s namespace)')
-    parser.add_argument('--frame', default=FIXED_FRAME, help='frame of the points (default: %(default)s)')
+    parser.add_argument('--frame', default=DEFAULT_FRAME, help='frame of the points (default: %(default)s)')
     parser.add_argument('--delay', type=float, default=0.0,
                         help='[s] a timed path starts this long after now (default 0)')
     args = parser.parse_args(rospy.myargv(sys.argv)[1:])

@@ -66,6 +66,7 @@ def launch_value(args, name, default):
 
 
 def terrain_case(duration, extra_args, stack='terrain'):
+    from nav_msgs.msg import Odometry
     from spherical_robots.msg import TerrainState, TrackingError
 
     state_fields = ([('contact_point.' + a, lambda m, a=a: getattr(m.contact_point, a), a + '0', 'm')
@@ -74,6 +75,9 @@ def terrain_case(duration, extra_args, stack='terrain'):
                     [(name, lambda m, name=name: getattr(m, name), name, unit)
                      for name, unit in (('psi', 'rad'), ('phi', 'rad'), ('roll_rate', 'rad/s'),
                                         ('lateral_rate', 'rad/s'), ('turn_rate', 'rad/s'))])
+    # odom first: the topic whose subscribers time waits for, so this checker sees every state.
+    odom_fields = [('pose.position.' + a, lambda m, a=a: getattr(m.pose.pose.position, a), 'c' + a, 'm')
+                   for a in 'xyz']
     error_fields = ([('desired.' + a, lambda m, a=a: getattr(m.desired, a), a + 'd', 'm') for a in 'xyz'] +
                     [('error_norm', lambda m: m.error_norm, 'e_norm', 'm'),
                      ('zeta', lambda m: m.zeta, 'zeta', 'rad')])
@@ -90,13 +94,17 @@ def terrain_case(duration, extra_args, stack='terrain'):
     return StackCase(
         launch='%s_stack.launch' % stack, launch_args=['duration:=%g' % duration],
         ns=launch_value(extra_args, 'ns', 'sphere' if stack == 'terrain' else stack),
-        topics=[('terrain_state', TerrainState, state_fields),
+        topics=[('odom', Odometry, odom_fields), ('terrain_state', TerrainState, state_fields),
                 ('tracking_error', TrackingError, error_fields)],
         sphere_sim_args=sphere_sim_args)
 
 
 def norma_case(duration, extra_args):
+    from nav_msgs.msg import Odometry
     from spherical_robots.msg import NormaState
+    # odom first: the topic whose subscribers time waits for, so this checker sees every state.
+    odom_fields = [('pose.position.x', lambda m: m.pose.pose.position.x, 'X', 'm'),
+                   ('pose.position.y', lambda m: m.pose.pose.position.y, 'Y', 'm')]
     fields = [('x', lambda m: m.x, 'X', 'm'), ('y', lambda m: m.y, 'Y', 'm'),
               ('psi', lambda m: m.psi, 'psi', 'rad')]
     for i, (coordinate, unit) in enumerate([('theta', 'rad'), ('alpha', 'rad'), ('phi', 'rad'),
@@ -106,7 +114,8 @@ def norma_case(duration, extra_args):
     return StackCase(
         launch='norma_stack.launch',
         launch_args=['controller:=tracking', 'duration:=%g' % duration],
-        ns=launch_value(extra_args, 'ns', 'norma'), topics=[('norma_state', NormaState, fields)],
+        ns=launch_value(extra_args, 'ns', 'norma'),
+        topics=[('odom', Odometry, odom_fields), ('norma_state', NormaState, fields)],
         sphere_sim_args=['norma', '--loop', 'sampled', '--controller', 'tracking',
                          '--duration', '%g' % duration, '--log-rate', '1000'])
 
@@ -154,7 +163,7 @@ def sampled_circle(poses):
     radius, rate = float(circle['radius']), float(circle['angular_rate'])
     period = 2.0 * math.pi / rate
     msg = Path()
-    msg.header.frame_id = 'world'
+    msg.header.frame_id = 'map'
     for i in range(poses + 1):
         t = period * i / poses
         pose = PoseStamped()

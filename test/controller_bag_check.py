@@ -2,7 +2,7 @@
 """Bag regression test of pure_pursuit_controller (test/controller_bag_regression.test).
 
 In the style of robot_localization's bag tests: launch/replay.launch plays the recorded plant
-states (only /sphere/terrain_state) of test/data/terrain_3R_circle_fixture.bag with clock; a
+odometry (only /sphere/odom) of test/data/terrain_3R_circle_fixture.bag with clock; a
 live pure_pursuit_controller, its outputs remapped to /sphere/replayed/..., drives the recorded
 robot again; this node compares what it publishes with what the recording controller published,
 message by message, matched by header stamp.

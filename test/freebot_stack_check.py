@@ -40,7 +40,6 @@ WALL_DEADLINE = 240.0  # [s] wall, for anything the stack should do in time
 IK_STATUS = 'freebot_ik: freebot ik'  # after the namespace: '<ns>/freebot_ik: freebot ik'
 PLANT_STATUS = 'freebot_plant: freebot plant'
 SLACK = 0.5  # [s] simulated: message latency at 5x real time (0.1 s of wall)
-WORLD_FRAME = 'world'
 
 
 # Every wait of this script is bounded by WALL_DEADLINE.
@@ -57,23 +56,24 @@ def pose_of(values):
     return pose
 
 
-def goal_of(values):
+def goal_of(values, frame):
     goal = MoveFreebotGoal()
-    goal.target.header.frame_id = WORLD_FRAME
+    goal.target.header.frame_id = frame
     goal.target.header.stamp = rospy.Time.now()
     goal.target.pose = pose_of(values)
     return goal
 
 
 class MoveClient(testing.GoalClient):
-    """A client of move_freebot."""
+    """A client of move_freebot, whose goals are in the chain's fixed base frame."""
 
-    def __init__(self):
+    def __init__(self, base_frame):
         super().__init__('move_freebot', MoveFreebotAction, WALL_DEADLINE)
+        self.base_frame = base_frame
 
     def move(self, values):
-        """A goal [x, y, z] or [x, y, z, qw, qx, qy, qz] in the world."""
-        self.send(goal_of(values))
+        """A goal [x, y, z] or [x, y, z, qw, qx, qy, qz] in the base frame."""
+        self.send(goal_of(values, self.base_frame))
 
 
 class FreebotStackCheck(unittest.TestCase):
@@ -84,6 +84,7 @@ class FreebotStackCheck(unittest.TestCase):
         cls.radii = [float(r) for r in rospy.get_param('freebot/radii')]
         cls.modules = len(cls.radii) - 1
         cls.end_frame = cls.prefix + 'link%d' % cls.modules
+        cls.base_frame = cls.prefix + 'link0'
         cls.reachable = [float(v) for v in rospy.get_param('~reachable')]
         cls.unreachable = [float(v) for v in rospy.get_param('~unreachable')]
         cls.states = Recorder('freebot_state', FreebotState)
@@ -93,11 +94,11 @@ class FreebotStackCheck(unittest.TestCase):
         cls.tf_listener = tf2_ros.TransformListener(cls.tf_buffer)
         cls.commands = Recorder('actuators/command', JointState)
         wait_until(lambda: cls.states.count() > 0, 'the first freebot_state message')
-        cls.goals = MoveClient()
+        cls.goals = MoveClient(cls.base_frame)
 
     def end_effector(self):
-        """B_n's centre and orientation (w, x, y, z) in world, from tf."""
-        t = self.tf_buffer.lookup_transform('world', self.end_frame, rospy.Time(0),
+        """B_n's centre and orientation (w, x, y, z) in the base's frame, from tf."""
+        t = self.tf_buffer.lookup_transform(self.base_frame, self.end_frame, rospy.Time(0),
                                             rospy.Duration(10.0)).transform
         return ((t.translation.x, t.translation.y, t.translation.z),
                 (t.rotation.w, t.rotation.x, t.rotation.y, t.rotation.z))
@@ -123,6 +124,19 @@ class FreebotStackCheck(unittest.TestCase):
     def value(self, suffix, key):
         status = self.status(suffix)
         return next((pair.value for pair in status.values if pair.key == key), None) if status else None
+
+    def test_00_description_and_frames(self):
+        """robot_description is the chain of freebot/radii, sphere for sphere; the fixed base is
+        a frame of map (at the origin parameters, 0 by default), with no odometry."""
+        import xml.etree.ElementTree as ElementTree
+        robot = ElementTree.fromstring(rospy.get_param('robot_description'))
+        spheres = {link.get('name'): float(link.find('collision/geometry/sphere').get('radius'))
+                   for link in robot.findall('link')}
+        self.assertEqual(spheres, {'link%d' % i: r for i, r in enumerate(self.radii)})
+        base = self.tf_buffer.lookup_transform('map', self.base_frame, rospy.Time(0),
+                                               rospy.Duration(10.0)).transform
+        self.assertEqual((base.translation.x, base.translation.y, base.translation.z), (0.0, 0.0, 0.0))
+        self.assertFalse(self.tf_buffer.can_transform('map', self.prefix + 'odom', rospy.Time(0)))
 
     def test_01_service(self):
         """solve_ik: the reachable target within the solver's default tolerances, the other not,
@@ -221,7 +235,7 @@ class FreebotStackCheck(unittest.TestCase):
     def test_05_a_second_goal_preempts_the_first(self):
         """A second goal while the first moves: the first is preempted (its errors as measured),
         the second arrives."""
-        second = MoveClient()
+        second = MoveClient(self.base_frame)
         self.goals.move(self.reachable)
         self.wait_moving()
         target = [float(v) for v in rospy.get_param('~position_only')]
@@ -265,7 +279,7 @@ class FreebotStackCheck(unittest.TestCase):
     def test_07_a_malformed_goal_is_rejected_and_the_goal_in_force_goes_on(self):
         """A goal with a NaN coordinate while another moves: rejected at once, naming the field;
         the goal in force arrives."""
-        bad = MoveClient()
+        bad = MoveClient(self.base_frame)
         self.goals.move(self.reachable)
         self.wait_moving()
         bad.move([float('nan')] + list(self.reachable[1:]))

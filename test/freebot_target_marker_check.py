@@ -2,10 +2,10 @@
 """rostest of freebot_target_marker.py (test/freebot_target_marker.test): its interactive marker
 server spoken to as rviz speaks to it, on the real topics of Debian's interactive_markers
 (<server>/update_full, <server>/update, <server>/feedback):
-  1. the marker 'target' is offered in world at ~initial (Table II's target A);
+  1. the marker 'target' is offered in link0 (the chain's base) at ~initial (Table II's target A);
   2. a drag (POSE_UPDATE feedback) sends no goal; the release (MOUSE_UP) sends exactly the
-     released pose as a goal in world of the move_freebot action (recorded on its goal topic;
-     no action server runs here);
+     released pose as a goal in link0 (the chain's base, the marker's default ~frame) of the
+     move_freebot action (recorded on its goal topic; no action server runs here);
   3. a goal from elsewhere (ik_target) moves the marker; a position-only one (zero quaternion)
      keeps the marker's orientation.
 ~position_only (false): the node runs with ~position_only, so the goal's quaternion is all zero.
@@ -57,7 +57,7 @@ class FreebotTargetMarkerCheck(unittest.TestCase):
     def send_feedback(self, event, pose):
         feedback = InteractiveMarkerFeedback(client_id='/rviz/InteractiveMarkers',
                                              marker_name='target', event_type=event, pose=pose)
-        feedback.header.frame_id = 'world'
+        feedback.header.frame_id = 'link0'
         feedback.header.stamp = rospy.Time.now()
         self.feedback.publish(feedback)
 
@@ -74,7 +74,7 @@ class FreebotTargetMarkerCheck(unittest.TestCase):
         markers = {m.name: m for m in self.inits.last().markers}
         self.assertIn('target', markers)
         target = markers['target']
-        self.assertEqual(target.header.frame_id, 'world')
+        self.assertEqual(target.header.frame_id, 'link0')
         for got, want in zip(pose_list(target.pose), TABLE_II_A):
             self.assertAlmostEqual(got, want, places=9)
         self.assertGreaterEqual(len(target.controls), 7)  # the body and six rings/arrows
@@ -103,7 +103,7 @@ class FreebotTargetMarkerCheck(unittest.TestCase):
         goals = self.goals.since(0)
         self.assertEqual(len(goals), 1)
         goal = goals[0].goal.target
-        self.assertEqual(goal.header.frame_id, 'world')
+        self.assertEqual(goal.header.frame_id, 'link0')
         expected = pose_list(released)
         if rospy.get_param('~position_only', False):
             expected[3:] = [0.0, 0.0, 0.0, 0.0]  # freebot_ik's position-only goal
@@ -113,13 +113,13 @@ class FreebotTargetMarkerCheck(unittest.TestCase):
         wait_until(lambda: self.ik_target.get_num_connections() > 0,
                    'the marker node on ik_target', DEADLINE)
         full = PoseStamped()
-        full.header.frame_id = 'world'
+        full.header.frame_id = 'link0'
         full.pose.position.x, full.pose.position.y, full.pose.position.z = 0.1151, 0.1489, 0.0291
         full.pose.orientation.w, full.pose.orientation.x = 0.6, 0.8
         self.assertEqual(pose_list(self.marker_after(full, 'the full-pose goal')),
                          pose_list(full.pose))
         position_only = PoseStamped()
-        position_only.header.frame_id = 'world'
+        position_only.header.frame_id = 'link0'
         position_only.pose.position.x, position_only.pose.position.z = 0.2, 0.05
         kept = self.marker_after(position_only, 'the position-only goal')
         self.assertEqual(pose_list(kept)[:3], [0.2, 0.0, 0.05])

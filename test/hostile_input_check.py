@@ -36,8 +36,7 @@ from sensor_msgs.msg import JointState
 
 from spherical_robots.msg import (ExecuteRotorManoeuvreAction, ExecuteRotorManoeuvreGoal,
                                   FreebotState, MoveFreebotAction, MoveFreebotActionGoal,
-                                  MoveFreebotGoal, MoveFreebotResult, NormaState, TerrainState,
-                                  TrackingError)
+                                  MoveFreebotGoal, MoveFreebotResult, TrackingError)
 from spherical_robots_testing import GoalClient, wait_until
 
 NAN = float('nan')
@@ -103,32 +102,6 @@ def stamped_copies(last, label):
     return cases
 
 
-def terrain_state_cases(last):
-    return edited_copies(last, (
-        ('contact NaN', lambda m: setattr(m.contact_point, 'x', NAN)),
-        ('contact 1e300', lambda m: setattr(m.contact_point, 'y', HUGE)),
-        ('centre -Inf', lambda m: setattr(m.centre, 'z', -INF)),
-        ('zero normal', lambda m: setattr(m.normal, 'z', 0.0)),
-        ('non-unit heading', lambda m: setattr(m.heading, 'x', 3.0)),
-        ('phi 1e300', lambda m: setattr(m, 'phi', HUGE)),
-    )) + stamped_copies(last, 'terrain_state')
-
-
-def norma_state_cases(last):
-    def entry(field, i, value):
-        def edit(m):
-            values = list(getattr(m, field))
-            values[i] = value
-            setattr(m, field, values)
-        return edit
-    return edited_copies(last, (
-        ('q NaN', entry('q', 1, NAN)),
-        ('x 1e300', lambda m: setattr(m, 'x', HUGE)),
-        ('qd -Inf', entry('qd', 0, -INF)),
-        ('delta -1e300', entry('q', 3, -HUGE)),
-    )) + stamped_copies(last, 'norma_state')
-
-
 def edited_copies(last, edits):
     """Copies of the last good message, stamped now, each with one bad edit."""
     cases = []
@@ -175,7 +148,7 @@ def freebot_state_cases(last):
 def goal_cases(_last):
     """Malformed goals of the move_freebot action, as a client's goal topic carries them. The
     action server takes a goal id once (a repeat is the same goal): one id per case."""
-    def goal(x, y, z, qw=1.0, frame='world'):
+    def goal(x, y, z, qw=1.0, frame='freebot/link0'):
         msg = MoveFreebotActionGoal()
         msg.header.stamp = msg.goal_id.stamp = rospy.Time.now()
         msg.goal_id.id = 'hostile %r %r %r %r %s' % (x, y, z, qw, frame)
@@ -202,7 +175,7 @@ STACKS = {
     'terrain': {
         'joint_topics': [('actuators/state', ['theta', 'phi', 'psi'], 'velocity'),
                          ('actuators/command', ['theta', 'phi', 'psi'], 'velocity')],
-        'states': [('terrain_state', TerrainState, terrain_state_cases)],
+        'states': [('odom', Odometry, odometry_cases)],
         'tracking': True,
     },
     'roller': {
@@ -210,13 +183,17 @@ STACKS = {
                          ('drive/command', ['theta', 'phi'], 'velocity'),
                          ('actuators/state', ['roller_1', 'roller_2'], 'velocity'),
                          ('actuators/command', ['roller_1', 'roller_2'], 'velocity')],
-        'states': [('terrain_state', TerrainState, terrain_state_cases)],
+        'states': [('odom', Odometry, odometry_cases)],
         'tracking': True,
     },
     'norma': {
+        # joint_states without positions: robot_state_publisher, which reads them too, drops
+        # them whole (it would put a NaN position on /tf).
         'joint_topics': [('actuators/state', ['pendulum_motor', 'slider_motor'], 'effort'),
-                         ('actuators/command', ['pendulum_motor', 'slider_motor'], 'effort')],
-        'states': [('norma_state', NormaState, norma_state_cases)],
+                         ('actuators/command', ['pendulum_motor', 'slider_motor'], 'effort'),
+                         ('joint_states', ['tilt_joint', 'shell_joint', 'pendulum_joint',
+                                           'slider_joint'], 'velocity')],
+        'states': [('odom', Odometry, odometry_cases)],
         'tracking': True,
     },
     'rotor': {
@@ -278,7 +255,7 @@ class HostileInput(unittest.TestCase):
     def send_goal(cls):
         """Table II's C (reachable as a full pose with 4 modules), driven while the bursts come."""
         goal = MoveFreebotGoal()
-        goal.target.header.frame_id = 'world'
+        goal.target.header.frame_id = 'freebot/link0'
         position, q = goal.target.pose.position, goal.target.pose.orientation
         position.x, position.y, position.z = 0.0924, 0.1597, 0.1154
         q.w, q.x, q.y, q.z = 0.9682, 0.0874, 0.2220, 0.0756

@@ -88,14 +88,16 @@ def messages(bag_path, topics):
 
 
 def transforms(bag_path, prefix):
-    """The plant's /tf messages of the stack's frames (those from the fixed frame `world`; the
-    ones between the robot's links come from robot_state_publisher, an observer, which may drop
-    joint_states it falls behind on), as (child frame, stamp, translation, rotation)."""
+    """The plant's /tf messages of the stack's frames (odom -> base_link, and base_link -> shell,
+    heading of the terrain robots; the ones between the robot's links come from
+    robot_state_publisher, an observer, which may drop joint_states it falls behind on), as
+    (child frame, stamp, translation, rotation)."""
+    plant_children = (prefix + 'shell', prefix + 'heading')
     out = []
     with rosbag.Bag(bag_path) as bag:
         for _, msg, _ in bag.read_messages(topics=['/tf']):
             for t in msg.transforms:
-                if t.child_frame_id.startswith(prefix) and t.header.frame_id == 'world':
+                if t.header.frame_id == prefix + 'odom' or t.child_frame_id in plant_children:
                     tr, rot = t.transform.translation, t.transform.rotation
                     out.append((t.child_frame_id, t.header.stamp.to_nsec(),
                                 tr.x, tr.y, tr.z, rot.x, rot.y, rot.z, rot.w))

@@ -13,10 +13,11 @@
 # Needs the built package (it sources install/setup.sh of the repository if roslaunch cannot find
 # spherical_robots). Runs its own master on a free port, so it can run beside another ROS master.
 # Kept topics: /tf, /tf_static, and under the stack's namespace what rviz and the bag tests read:
-# terrain: terrain_state, tracking_error, actuators/command, target, desired_path, trail,
-# terrain_marker (about 0.85 MB for 25 s); roller: the same plus roller_markers; norma:
+# terrain: odom (the controller's input), terrain_state (the contact points), tracking_error,
+# actuators/command, target, desired_path, trail, terrain_marker (about 1 MB for 25 s); roller:
+# the same plus roller_markers; norma:
 # tracking_error, target, desired_path, trail; rotor: planned_path, contact_curve, driven_path;
-# freebot: freebot_markers, ik_target, trail. Left out: odom, actuators/state, diagnostics,
+# freebot: freebot_markers, ik_target, trail. Left out: actuators/state, diagnostics,
 # cmd_vel, norma_state (1 kHz), freebot_state, joint_states (the tf they make is kept), which no
 # test reads.
 # Bag time = header stamp: the recorder stamps a message when it receives it, usually one 0.01 s
@@ -24,15 +25,16 @@
 # play would deliver terrain_state earlier than the live controller saw it. Latched messages and
 # messages stamped 0 keep their recorded time.
 set -euo pipefail
-. "$(dirname "${BASH_SOURCE[0]}")/env.sh"
+. "$(dirname "${BASH_SOURCE[0]}")/../scripts/env.sh"
 stack=${1:?usage: $0 terrain|roller|norma|rotor|freebot [OUT.bag] [DURATION]}
 case $stack in
   terrain) ns=sphere; default=terrain_3R_circle_fixture.bag
-           launch=(terrain_stack.launch robot:=3R path:=circle model:=paper speedup:=10)
-           keep="terrain_state tracking_error actuators/command target desired_path trail terrain_marker" ;;
+           # the paper's law: test/controller_bag_regression.test derives its tolerances from eq 55
+           launch=(terrain_stack.launch robot:=3R path:=circle model:=paper law:=paper speedup:=10)
+           keep="odom terrain_state tracking_error actuators/command target desired_path trail terrain_marker" ;;
   roller)  ns=roller; default=roller_2R_circle_fixture.bag
            launch=(roller_stack.launch path:=circle speedup:=10)
-           keep="terrain_state tracking_error actuators/command target desired_path trail terrain_marker roller_markers" ;;
+           keep="odom terrain_state tracking_error actuators/command target desired_path trail terrain_marker roller_markers" ;;
   norma)   ns=norma; default=norma_paper_fixture.bag
            launch=(norma_stack.launch controller:=paper speedup:=1)
            keep="tracking_error target desired_path trail"; default_duration=45 ;;

@@ -159,7 +159,7 @@ def robot_coloured(pixels, reference):
     return shell | band
 
 
-def world_position(transforms, frame, fixed='world'):
+def map_position(transforms, frame, fixed='map'):
     """Position of `frame` in `fixed` through the chain of latest transforms {child: (parent,
     translation, rotation xyzw)}; None if the chain does not reach `fixed`."""
     position = np.zeros(3)
@@ -255,7 +255,7 @@ class ReplayRvizCheck(unittest.TestCase):
         """World position of every robot frame from the latest transforms, None for a frame whose
         chain of transforms does not reach the fixed frame."""
         with self.lock:
-            return [world_position(self.transforms, frame) for frame in S.robot_frames]
+            return [map_position(self.transforms, frame) for frame in S.robot_frames]
 
     def wait_for_shot_window(self, min_jumps):
         """Waits for bag time inside the shot window in a pass after `min_jumps` loops."""

@@ -8,10 +8,10 @@ must be at the target: centre within ~position_bound [m] of (u, v, R) and the at
 ~attitude_bound [rad] of R_z(-psi) (back at the south pole, eq 2 with u_o = v_o = 0), and the
 result's distance is that of the odometry. Also: the set-points stream on actuators/command as
 rotor_1, rotor_2 within ~max_velocity and end at zero, driven_path ends where odom does,
-joint_states name both rotors, tf world -> <prefix>base_link. With ~actions true, after it: goals
-the planner rejects (an invalid request, no plan, a plan_index beyond the plans) while another
-executes, which goes on; a goal preempted by a second one (the rotors to rest, the second
-executed); a cancel (the rotors to rest, the sphere stays put).
+joint_states name both rotors, tf map -> <prefix>odom -> <prefix>base_link (the shell itself).
+With ~actions true, after it: goals the planner rejects (an invalid request, no plan, a
+plan_index beyond the plans) while another executes, which goes on; a goal preempted by a second
+one (the rotors to rest, the second executed); a cancel (the rotors to rest, the sphere stays put).
 With ~start_up true the stack plans and executes the manoeuvre itself (rotor_stack.launch
 execute:=true) and this check only waits for its end (on /diagnostics: the planner idle after one
 execution). With ~batch true (a stack in lock-step) the
@@ -216,7 +216,7 @@ class RotorStackCheck(unittest.TestCase):
 
         driven = self.driven.last()
         self.assertIsNotNone(driven)
-        self.assertEqual(driven.header.frame_id, 'world')
+        self.assertEqual(driven.header.frame_id, self.prefix + 'odom')
         self.assertGreater(len(driven.poses), 50)
         end = driven.poses[-1].pose.position
         self.assertLess(math.hypot(end.x - pose.position.x, end.y - pose.position.y), 1e-3)
@@ -224,9 +224,13 @@ class RotorStackCheck(unittest.TestCase):
     def test_02_joint_states_and_tf(self):
         wait_until(lambda: self.joints.last() is not None, 'joint_states')
         self.assertEqual(list(self.joints.last().name), ['rotor_1', 'rotor_2'])
-        transform = self.tf_buffer.lookup_transform('world', self.prefix + 'base_link',
+        transform = self.tf_buffer.lookup_transform('map', self.prefix + 'base_link',
                                                     rospy.Time(0), rospy.Duration(10.0))
         self.assertAlmostEqual(transform.transform.translation.z, RADIUS, delta=1e-9)
+        odom = self.odom.last()
+        self.assertEqual(odom.header.frame_id, self.prefix + 'odom')
+        self.assertEqual(odom.child_frame_id, self.prefix + 'base_link')
+        self.assertTrue(all(v > 0.0 for v in odom.pose.covariance[::7]))
         self.tf_buffer.lookup_transform(self.prefix + 'base_link', self.prefix + 'rotor_1_pair',
                                         rospy.Time(0), rospy.Duration(10.0))
 

@@ -201,21 +201,49 @@ class TrackingCheck(StackFixture):
         cls.errors = Recorder('tracking_error', TrackingError)
 
     def test_01_odometry(self):
+        """REP 105: pose of base_link in odom, gravity-aligned; twist in base_link, so that the
+        twist turned into odom, averaged over two messages, is the motion between them;
+        covariances not 0."""
+        # Past the start, whose actuator ramps change the velocity within a publish period.
+        wait_until(lambda: self.odom.count() >= 300, '300 odom messages (6 s)')
         odom = self.odom.last()
-        self.assertEqual(odom.header.frame_id, 'world')
+        self.assertEqual(odom.header.frame_id, self.prefix + 'odom')
         self.assertEqual(odom.child_frame_id, self.prefix + 'base_link')
         p = odom.pose.pose.position
         self.assertTrue(all(math.isfinite(v) for v in (p.x, p.y, p.z)))
+        for diagonal in (odom.pose.covariance[::7], odom.twist.covariance[::7]):
+            self.assertTrue(all(v > 0.0 for v in diagonal), diagonal)
+        def velocity_in_odom(msg):
+            q, v = msg.pose.pose.orientation, msg.twist.twist.linear
+            self.assertAlmostEqual(q.x, 0.0, delta=1e-12)  # z up: a turn about z only
+            self.assertAlmostEqual(q.y, 0.0, delta=1e-12)
+            yaw = 2.0 * math.atan2(q.z, q.w)
+            return (math.cos(yaw) * v.x - math.sin(yaw) * v.y,
+                    math.sin(yaw) * v.x + math.cos(yaw) * v.y, v.z)
+
+        recent = self.odom.since(-20)
+        for before, after in zip(recent, recent[1:]):
+            dt = (after.header.stamp - before.header.stamp).to_sec()
+            a, b = after.pose.pose.position, before.pose.pose.position
+            moved = ((a.x - b.x) / dt, (a.y - b.y) / dt, (a.z - b.z) / dt)
+            mean = [(u + w) / 2.0 for u, w in zip(velocity_in_odom(before), velocity_in_odom(after))]
+            for axis in range(3):  # the trapezoid's error over 0.02 s while tracking: < 1 mm/s
+                self.assertAlmostEqual(mean[axis], moved[axis], delta=1e-3)
 
     def test_02_tf(self):
-        for child in ('base_link', 'heading', 'marker_link'):  # marker_link: robot_state_publisher
-            transform = self.tf_buffer.lookup_transform('world', self.prefix + child, rospy.Time(0),
+        # map -> odom (static) -> base_link -> shell (-> marker_link: robot_state_publisher), heading
+        for child in ('odom', 'base_link', 'shell', 'heading', 'marker_link'):
+            transform = self.tf_buffer.lookup_transform('map', self.prefix + child, rospy.Time(0),
                                                         rospy.Duration(10.0))
             t = transform.transform.translation
             self.assertTrue(all(math.isfinite(v) for v in (t.x, t.y, t.z)), child)
-        # The heading frame sits at the contact point, base_link R above it along the normal.
-        base = self.tf_buffer.lookup_transform('world', self.prefix + 'base_link', rospy.Time(0))
-        heading = self.tf_buffer.lookup_transform('world', self.prefix + 'heading', rospy.Time(0))
+        # The shell's centre is base_link's; the heading frame sits at the contact point, base_link
+        # R above it along the normal.
+        shell = self.tf_buffer.lookup_transform(self.prefix + 'base_link', self.prefix + 'shell',
+                                                rospy.Time(0)).transform.translation
+        self.assertEqual((shell.x, shell.y, shell.z), (0.0, 0.0, 0.0))
+        base = self.tf_buffer.lookup_transform('map', self.prefix + 'base_link', rospy.Time(0))
+        heading = self.tf_buffer.lookup_transform('map', self.prefix + 'heading', rospy.Time(0))
         b, h = base.transform.translation, heading.transform.translation
         # Transforms are published together but may be looked up at different times: allow the
         # distance travelled in a few steps.
@@ -223,7 +251,7 @@ class TrackingCheck(StackFixture):
 
     def test_03_desired_path_latched(self):
         path = rospy.wait_for_message('desired_path', Path, timeout=30.0)
-        self.assertEqual(path.header.frame_id, 'world')
+        self.assertEqual(path.header.frame_id, self.prefix + 'odom')
         self.assertGreaterEqual(len(path.poses), 100)
         for pose in path.poses:
             q = pose.pose.position
@@ -245,18 +273,18 @@ class TrackingCheck(StackFixture):
                                        delta=1e-9)
 
     def test_05_tracking_converges(self):
-        assert_tracking(self, self.errors)
+        assert_tracking(self, Recorder('tracking_error', TrackingError))
 
     def test_06_bad_messages_kill_nothing(self):
         self.check_rejected_actuator_state()
-        # The controller ignores terrain_state messages it cannot use, and so does the hardware
-        # interface with a non-finite set-point.
-        state_pub = rospy.Publisher('terrain_state', TerrainState, queue_size=10)
-        bad_state = self.states.last()
-        bad_state.normal.x = float('nan')
-        publish_until(state_pub, [bad_state],
-                      lambda: self.rejected_count(CONTROLLER_STATUS, 'terrain_state') >= 1,
-                      'the controller to report a rejected terrain_state on /diagnostics')
+        # The controller ignores odometry it cannot use, and so does the hardware interface with a
+        # non-finite set-point.
+        odom_pub = rospy.Publisher('odom', Odometry, queue_size=10)
+        bad_odom = self.odom.last()
+        bad_odom.pose.pose.position.x = float('nan')
+        publish_until(odom_pub, [bad_odom],
+                      lambda: self.rejected_count(CONTROLLER_STATUS, 'odom') >= 1,
+                      'the controller to report a rejected odom on /diagnostics')
         command_pub = rospy.Publisher('actuators/command', JointState, queue_size=10)
         publish_when_connected(command_pub, JointState(name=['theta', 'phi', 'psi'],
                                                        velocity=[float('nan'), 0.0, 0.0]))
@@ -389,7 +417,7 @@ class SeamCheck(StackFixture):
         return None, None
 
     def test_01_tracks_within_bounds(self):
-        assert_tracking(self, self.errors)
+        assert_tracking(self, Recorder('tracking_error', TrackingError))
 
     def test_02_e_stop_mid_run(self):
         if not rospy.get_param('~safety', False):
@@ -545,13 +573,29 @@ class NormaCheck(StackFixture):
         # from the last state.
         for joint, coordinate in zip((0, 1, 2, 3), (2, 0, 1, 3)):
             self.assertAlmostEqual(msg.position[joint], state.q[coordinate], delta=0.05)
-        for child in ('base_link', 'tilt_link', 'shell_link', 'pendulum_link', 'slider_link'):
-            transform = self.tf_buffer.lookup_transform('world', self.prefix + child,
+        for child in ('odom', 'base_link', 'tilt_link', 'shell_link', 'pendulum_link', 'slider_link'):
+            transform = self.tf_buffer.lookup_transform('map', self.prefix + child,
                                                         rospy.Time(0), rospy.Duration(10.0))
             t = transform.transform.translation
             self.assertTrue(all(math.isfinite(v) for v in (t.x, t.y, t.z)), child)
-        base = self.tf_buffer.lookup_transform('world', self.prefix + 'base_link', rospy.Time(0))
+        base = self.tf_buffer.lookup_transform(self.prefix + 'odom', self.prefix + 'base_link',
+                                               rospy.Time(0))
         self.assertAlmostEqual(base.transform.translation.z, self.radius, delta=1e-9)
+        # REP 105: odom's pose in <prefix>odom, gravity-aligned, its twist in base_link: eqs 6
+        # and 12 turned into {F_l}, forward R theta' cos(phi), leftward -R phi', of the state
+        # with the same stamp (an odom a few messages old: its state has surely come too).
+        wait_until(lambda: self.odom.count() > 10, '10 odom messages')
+        odom = self.odom.since(0)[-5]
+        self.assertEqual(odom.header.frame_id, self.prefix + 'odom')
+        self.assertEqual(odom.child_frame_id, self.prefix + 'base_link')
+        q = odom.pose.pose.orientation
+        self.assertEqual((q.x, q.y), (0.0, 0.0))
+        self.assertTrue(all(v > 0.0 for v in odom.pose.covariance[::7]))
+        same = next(m for m in reversed(self.norma_states.since(0))
+                    if m.header.stamp == odom.header.stamp)
+        self.assertAlmostEqual(odom.twist.twist.linear.x,
+                               self.radius * same.qd[0] * math.cos(same.q[2]), delta=1e-12)
+        self.assertAlmostEqual(odom.twist.twist.linear.y, -self.radius * same.qd[2], delta=1e-12)
 
     def test_03_bad_efforts_kill_nothing(self):
         publisher = rospy.Publisher('actuators/state', JointState, queue_size=10)
@@ -608,7 +652,7 @@ class NormaCheck(StackFixture):
                         'torques with the loaded PID2 gains back')
 
 
-def path_message(points, stamps=None, frame='world'):
+def path_message(points, stamps=None, frame='map'):
     """A nav_msgs/Path through (x, y) points, its poses stamped `stamps` [s] (default all 0)."""
     msg = Path()
     msg.header.frame_id = frame
@@ -712,7 +756,7 @@ class UserPathCheck(StackFixture):
         from geometry_msgs.msg import TransformStamped
         broadcaster = tf2_ros.StaticTransformBroadcaster()
         offset = TransformStamped()
-        offset.header.frame_id = 'world'
+        offset.header.frame_id = 'map'
         offset.child_frame_id = 'user_path_frame'
         offset.transform.translation.x, offset.transform.translation.y = 1.0, -0.5
         # a quarter turn about z: (x, y) -> (-y, x)
@@ -724,7 +768,7 @@ class UserPathCheck(StackFixture):
                                                            frame='user_path_frame'))
         wait_until(lambda: self.desired_paths.count() > shown, 'the new path on desired_path')
         desired = self.desired_paths.last()
-        self.assertEqual(desired.header.frame_id, 'world')
+        self.assertEqual(desired.header.frame_id, self.prefix + 'odom')
         first, last = desired.poses[0].pose.position, desired.poses[-1].pose.position
         self.assertAlmostEqual(math.dist((first.x, first.y), (1.0, -0.5)), 0.0, delta=1e-9)
         self.assertAlmostEqual(math.dist((last.x, last.y), (1.0, 1.5)), 0.0, delta=1e-9)
@@ -827,10 +871,84 @@ class OffMapCheck(StackFixture):
         self.assert_still_publishing([self.odom, self.states])
 
 
+class OdometryFeedbackCheck(StackFixture):
+    """mode:=odometry: only standard messages reach the controller (issue 15 item 2), and they
+    may come from another source than the plant. The test launch file remaps the plant's
+    terrain_state to a topic nobody reads and gives the controller ~odom_topic (launch argument
+    odom), which another node (~odom_source) publishes; by the master's own record the controller
+    reads that topic (and, for RS, joint_states: the tilt) and no message of the plant's own
+    type, and it still tracks: equal to the batch run (~batch), or within ~mean_bound and
+    ~max_bound [m] over 40-60 s."""
+
+    def test_01_controller_reads_standard_messages_only(self):
+        import rosgraph
+        controller = rospy.resolve_name('pure_pursuit_controller')
+        odom_topic = rospy.resolve_name(rospy.get_param('~odom_topic', 'odom'))
+        publishers, subscribers, _ = rosgraph.Master(NAME).getSystemState()
+        read = sorted(topic for topic, nodes in subscribers if controller in nodes)
+        types = dict(rosgraph.Master(NAME).getTopicTypes())
+        rospy.loginfo('%s reads %s', controller, read)
+        self.assertIn(odom_topic, read)
+        self.assertEqual(types.get(odom_topic), 'nav_msgs/Odometry')
+        source = rospy.get_param('~odom_source', None)
+        if source is not None:
+            self.assertEqual(dict(publishers)[odom_topic], [rospy.resolve_name(source)])
+        if rospy.get_param('pure_pursuit_controller/robot_type') == 'RS':
+            self.assertIn(rospy.resolve_name('joint_states'), read)
+        for topic in read:
+            self.assertNotEqual(types.get(topic), PKG + '/TerrainState', topic)
+        # The plant's own message goes elsewhere: nothing publishes it here.
+        self.assertNotIn(rospy.resolve_name('terrain_state'), dict(publishers))
+
+    def test_02_tracking_converges(self):
+        assert_tracking(self, Recorder('tracking_error', TrackingError))
+
+
+class SensorsCheck(StackFixture):
+    """mode:=sensors: the plant's seeded odometry noise and IMU (config/sensors_noisy.yaml, loaded
+    into its private namespace): odom scatters about the true centre (terrain_state's, same
+    stamp) with the configured deviation and claims it in its covariance; the IMU comes at its
+    rate and reads gravity, +9.81 m/s^2 up, on average; the loop closed through this sensing still
+    tracks, |e_t| over 40-60 s below ~mean_bound and ~max_bound [m]."""
+
+    def test_01_odometry_scatters_as_configured(self):
+        sigma = float(rospy.get_param('terrain_plant/noise/position'))
+        wait_until(lambda: self.odom.count() >= 500, '500 odom messages')
+        truth = {m.header.stamp: m.centre for m in self.states.since(0)}
+        deviations = [getattr(m.pose.pose.position, a) - getattr(truth[m.header.stamp], a)
+                      for m in self.odom.since(0) if m.header.stamp in truth for a in 'xyz']
+        self.assertGreater(len(deviations), 1000)
+        mean = sum(deviations) / len(deviations)
+        deviation = math.sqrt(sum((d - mean) ** 2 for d in deviations) / len(deviations))
+        rospy.loginfo('odom - truth: mean %.3g m, deviation %.4g m over %d components (sigma %g m)',
+                      mean, deviation, len(deviations), sigma)
+        self.assertLess(abs(mean), 4.0 * sigma / math.sqrt(len(deviations)))
+        self.assertAlmostEqual(deviation, sigma, delta=0.1 * sigma)
+        self.assertAlmostEqual(self.odom.last().pose.covariance[0], 1e-6 + sigma ** 2, delta=1e-12)
+
+    def test_02_imu_reads_gravity(self):
+        from sensor_msgs.msg import Imu
+        rate = float(rospy.get_param('terrain_plant/imu_rate'))
+        imu = Recorder('imu', Imu)
+        wait_until(lambda: imu.count() >= 200, '200 imu messages')
+        readings = imu.since(0)
+        span = (readings[-1].header.stamp - readings[0].header.stamp).to_sec()
+        self.assertAlmostEqual((len(readings) - 1) / span, rate, delta=0.01 * rate)
+        self.assertEqual(readings[-1].header.frame_id, self.prefix + 'base_link')
+        up = sum(m.linear_acceleration.z for m in readings) / len(readings)
+        rospy.loginfo('imu: %d readings at %.1f Hz, mean specific force up %.4f m/s^2',
+                      len(readings), (len(readings) - 1) / span, up)
+        self.assertAlmostEqual(up, 9.81, delta=0.05)
+
+    def test_03_tracking_through_noisy_odometry(self):
+        assert_tracking(self, Recorder('tracking_error', TrackingError))
+
+
 if __name__ == '__main__':
     rospy.init_node(NAME)
     mode = rospy.get_param('~mode', 'tracking')
     rostest.rosrun(PKG, NAME, {'teleop': TeleopCheck, 'seam': SeamCheck, 'roller': RollerCheck,
                                'norma': NormaCheck, 'height_map': HeightMapCheck,
                                'off_map': OffMapCheck, 'user_path': UserPathCheck,
+                               'odometry': OdometryFeedbackCheck, 'sensors': SensorsCheck,
                                'smoothness': SmoothnessCheck}.get(mode, TrackingCheck))

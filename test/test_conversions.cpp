@@ -41,17 +41,51 @@ TEST(TwistConversion, TakesThePlanarPartAndListsTheRest) {
   EXPECT_INVALID_ARGUMENT(conv::planarTwist(twist(0, 0, -11.0), kMaxTwist), "angular.z");
 }
 
-TEST(OdometryConversion, TwistIsInTheChildFrame) {
-  // base_link turned 90 degrees about z: world +x is body -y.
-  const Eigen::Quaterniond orientation(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
-  const auto msg = conv::toOdometry({1, 2, 3}, orientation, {1, 0, 0}, {0, 0, 2}, "world",
-                                    "sphere/base_link", ros::Time(1.0));
-  EXPECT_EQ(msg.child_frame_id, "sphere/base_link");
-  EXPECT_NEAR(msg.twist.twist.linear.x, 0.0, 1e-12);
-  EXPECT_NEAR(msg.twist.twist.linear.y, -1.0, 1e-12);
-  EXPECT_NEAR(msg.twist.twist.angular.z, 2.0, 1e-12);
-  EXPECT_NEAR(msg.pose.pose.orientation.w, std::sqrt(0.5), 1e-12);
-  EXPECT_NEAR(msg.pose.pose.orientation.z, std::sqrt(0.5), 1e-12);
+// Every field as given: the orientation's doubles (a reader recomputes from them what the core
+// computed), the twist, and the covariance diagonals in a row-major 6 x 6 with zeros elsewhere.
+TEST(OdometryConversion, BodyOdometryCopiesEveryField) {
+  const Eigen::Quaterniond orientation(0.6, 0.0, 0.0, 0.8 + 1e-12);  // not quite unit
+  spherical_robots::config::OdometryParameters odometry;
+  odometry.pose_covariance_diagonal = {1, 2, 3, 4, 5, 6};
+  odometry.twist_covariance_diagonal = {7, 8, 9, 10, 11, 12};
+  const auto msg = conv::bodyOdometry({{1, 2, 3}, orientation, {0.5, -0.25, 0.125}, {0, 0, 2}}, odometry,
+                                      "a/odom", "a/base_link", ros::Time(3.0));
+  EXPECT_EQ(msg.header.stamp, ros::Time(3.0));
+  EXPECT_EQ(msg.header.frame_id, "a/odom");
+  EXPECT_EQ(msg.child_frame_id, "a/base_link");
+  EXPECT_EQ(msg.pose.pose.orientation.w, 0.6);
+  EXPECT_EQ(msg.pose.pose.orientation.z, 0.8 + 1e-12);
+  EXPECT_EQ(msg.twist.twist.linear.x, 0.5);
+  EXPECT_EQ(msg.twist.twist.linear.y, -0.25);
+  EXPECT_EQ(msg.twist.twist.angular.z, 2.0);
+  for (int row = 0; row < 6; ++row) {
+    for (int column = 0; column < 6; ++column) {
+      EXPECT_EQ(msg.pose.covariance[6 * row + column], row == column ? row + 1.0 : 0.0);
+      EXPECT_EQ(msg.twist.covariance[6 * row + column], row == column ? row + 7.0 : 0.0);
+    }
+  }
+}
+
+TEST(ImuConversion, ReadingAndCovarianceDiagonals) {
+  spherical_robots::config::OdometryParameters odometry;
+  odometry.imu_orientation_covariance_diagonal = {1, 2, 3};
+  odometry.imu_angular_velocity_covariance_diagonal = {4, 5, 6};
+  odometry.imu_linear_acceleration_covariance_diagonal = {7, 8, 9};
+  spherical_robots::ImuReading reading;
+  reading.angular_velocity = {0.1, 0.2, 0.3};
+  reading.linear_acceleration = {0.0, 0.5, 9.81};
+  const auto msg = conv::toImu(reading, odometry, "a/base_link", ros::Time(2.0));
+  EXPECT_EQ(msg.header.frame_id, "a/base_link");
+  EXPECT_EQ(msg.orientation.w, 1.0);
+  EXPECT_EQ(msg.angular_velocity.z, 0.3);
+  EXPECT_EQ(msg.linear_acceleration.z, 9.81);
+  for (int row = 0; row < 3; ++row) {
+    for (int column = 0; column < 3; ++column) {
+      EXPECT_EQ(msg.orientation_covariance[3 * row + column], row == column ? row + 1.0 : 0.0);
+      EXPECT_EQ(msg.angular_velocity_covariance[3 * row + column], row == column ? row + 4.0 : 0.0);
+      EXPECT_EQ(msg.linear_acceleration_covariance[3 * row + column], row == column ? row + 7.0 : 0.0);
+    }
+  }
 }
 
 TEST(JointStateConversion, FieldsAsGivenAndReadBackByName) {

@@ -8,7 +8,13 @@
 #include <tuple>
 #include <vector>
 
+#include <urdf_parser/urdf_parser.h>
+
+#include <cmath>
+
 #include "spherical_robots/config/freebot_config.hpp"
+#include "spherical_robots/config/freebot_description.hpp"
+#include "spherical_robots/config/robot_description.hpp"
 #include "spherical_robots/config/yaml_parameter_source.hpp"
 #include "expect_invalid_argument.hpp"
 #include "temp_yaml.hpp"
@@ -19,6 +25,8 @@ namespace {
 const std::string kShipped = SPHERICAL_ROBOTS_SOURCE_DIR "/config/freebot.yaml";
 
 using spherical_robots::config::freebotChain;
+using spherical_robots::config::freebotRobotDescription;
+using spherical_robots::config::sphereRadiusFromUrdf;
 using spherical_robots::config::freebotGoalExecutive;
 using spherical_robots::config::YamlParameterSource;
 using spherical_robots::freebot::FreebotChain;
@@ -108,6 +116,37 @@ TEST(FreebotConfig, ABadChainNamesItsKeys) {
   const TempYaml thick("freebot: {radii: [0.034, 0.034], trolley: {shell_thickness: 0.05}}\n");
   EXPECT_INVALID_ARGUMENT(freebotChain(YamlParameterSource(thick.path())), "shell thickness",
                           "0.05");
+}
+
+// The description is the chain the nodes integrate: one sphere per module of exactly the radii
+// they read, in a tree rooted at the base, read back by urdfdom (what rviz's RobotModel uses).
+TEST(FreebotDescription, IsTheChainOfTheRadiiTheNodesUse) {
+  const std::vector<double> radii = freebotChain(YamlParameterSource(kShipped)).manipulator().radii();
+  const std::string xml = freebotRobotDescription(radii);
+  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
+  ASSERT_TRUE(model) << xml;
+  EXPECT_EQ(model->getRoot()->name, "link0");
+  std::vector<urdf::LinkSharedPtr> links;
+  model->getLinks(links);
+  EXPECT_EQ(links.size(), radii.size());
+  for (std::size_t i = 0; i < radii.size(); ++i) {
+    const std::string link = "link" + std::to_string(i);
+    EXPECT_EQ(sphereRadiusFromUrdf(xml, link), radii[i]) << link;  // to the bit: 17 digits
+    if (i == 0) continue;
+    const urdf::JointConstSharedPtr joint = model->getJoint("joint" + std::to_string(i));
+    ASSERT_TRUE(joint) << i;
+    EXPECT_EQ(joint->type, urdf::Joint::FLOATING);
+    EXPECT_EQ(joint->parent_link_name, "link" + std::to_string(i - 1));
+    EXPECT_EQ(joint->child_link_name, link);
+  }
+  const std::vector<double> odd = {0.04, 1.0 / 3.0, 0.0123456789012345};
+  EXPECT_EQ(sphereRadiusFromUrdf(freebotRobotDescription(odd), "link1"), odd[1]);
+}
+
+TEST(FreebotDescription, RefusesWhatIsNoChain) {
+  EXPECT_INVALID_ARGUMENT(freebotRobotDescription({0.034}), "1 radii");
+  EXPECT_INVALID_ARGUMENT(freebotRobotDescription({0.034, 0.0}), "l_1");
+  EXPECT_INVALID_ARGUMENT(freebotRobotDescription({std::nan(""), 0.034}), "l_0");
 }
 
 }  // namespace

@@ -45,7 +45,7 @@ TEST(FreebotConversion, ChainStateRoundTripAndRejections) {
   state.joints = {{q, q.conjugate()}, {}};
   state.headings = {0.5, -1.0};
   spherical_robots::FreebotState msg = sr::conversions::toFreebotStateMsg(
-      state, sr::freebot::LinkPose{}, "world", ros::Time(2.0));
+      state, sr::freebot::LinkPose{}, "fb/link0", ros::Time(2.0));
   const sr::freebot::ChainState back = sr::conversions::chainStateFromMsg(msg);
   ASSERT_EQ(back.joints.size(), 2u);
   EXPECT_LT(back.joints[0].link.angularDistance(q), 1e-15);
@@ -64,20 +64,20 @@ TEST(FreebotConversion, AGoalsTargetAndItsRejections) {
   geometry_msgs::PoseStamped target;
   target.pose.position.x = 0.1;
   target.pose.position.z = -0.2;
-  // An all-zero orientation, an empty frame: the position only, in the world.
-  sr::freebot::GoalPose goal = sr::conversions::goalPoseFromMsg(target, "world", 1.0, 1e-3);
+  // An all-zero orientation, an empty frame: the position only, in the base frame.
+  sr::freebot::GoalPose goal = sr::conversions::goalPoseFromMsg(target, "freebot/link0", 1.0, 1e-3);
   EXPECT_EQ(goal.mode, sr::freebot::IkMode::PositionOnly);
   EXPECT_EQ(goal.position, Eigen::Vector3d(0.1, 0.0, -0.2));
   // A unit quaternion, (x, y, z, w) in the message: the full pose.
-  target.header.frame_id = "world";
+  target.header.frame_id = "freebot/link0";
   target.pose.orientation.x = 0.6;
   target.pose.orientation.w = 0.8;
-  goal = sr::conversions::goalPoseFromMsg(target, "world", 1.0, 1e-3);
+  goal = sr::conversions::goalPoseFromMsg(target, "freebot/link0", 1.0, 1e-3);
   EXPECT_EQ(goal.mode, sr::freebot::IkMode::FullPose);
   EXPECT_LT(goal.orientation.angularDistance(Eigen::Quaterniond(0.8, 0.6, 0.0, 0.0)), 1e-15);
   const auto rejects = [&](const geometry_msgs::PoseStamped& bad, const std::string& field) {
     try {
-      sr::conversions::goalPoseFromMsg(bad, "world", 1.0, 1e-3);
+      sr::conversions::goalPoseFromMsg(bad, "freebot/link0", 1.0, 1e-3);
       ADD_FAILURE() << "accepted; expected a rejection naming " << field;
     } catch (const std::invalid_argument& e) {
       EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
@@ -112,7 +112,7 @@ TEST(FreebotConversion, VerdictsBecomeResultsAndFeedback) {
             spherical_robots::MoveFreebotFeedback::MOVING);
 }
 
-// The chain's transforms composed from the world give each sphere's pose by the manipulator's
+// The chain's transforms composed from the base B_0 give each sphere's pose by the manipulator's
 // forward kinematics (B_n: the end effector); each trolley arrow sits on its sphere's surface.
 TEST(FreebotConversion, ChainTransformsComposeToTheForwardKinematics) {
   const sr::freebot::SrcManipulator manipulator({0.05, 0.04, 0.03});
@@ -123,22 +123,21 @@ TEST(FreebotConversion, ChainTransformsComposeToTheForwardKinematics) {
   state.headings = {0.3, -1.2};
   const auto transforms = sr::conversions::freebotChainTransforms(manipulator, state, "fb/",
                                                                    ros::Time(1.0));
-  ASSERT_EQ(transforms.size(), 3u);
-  EXPECT_EQ(transforms[0].header.frame_id, sr::kWorldFrame);
-  Eigen::Isometry3d world_from_link = Eigen::Isometry3d::Identity();
+  ASSERT_EQ(transforms.size(), 2u);
+  Eigen::Isometry3d base_from_link = Eigen::Isometry3d::Identity();
   const std::vector<sr::freebot::LinkPose> links = manipulator.forwardKinematics(state.joints);
   for (std::size_t i = 0; i < transforms.size(); ++i) {
     const auto& t = transforms[i].transform;
-    EXPECT_EQ(transforms[i].child_frame_id, sr::conversions::freebotLinkFrame("fb/", i));
-    world_from_link = world_from_link * Eigen::Translation3d(t.translation.x, t.translation.y,
+    EXPECT_EQ(transforms[i].header.frame_id, sr::conversions::freebotLinkFrame("fb/", i));
+    EXPECT_EQ(transforms[i].child_frame_id, sr::conversions::freebotLinkFrame("fb/", i + 1));
+    base_from_link = base_from_link * Eigen::Translation3d(t.translation.x, t.translation.y,
                                                              t.translation.z) *
                       Eigen::Quaterniond(t.rotation.w, t.rotation.x, t.rotation.y, t.rotation.z);
-    if (i == 0) continue;
-    EXPECT_LT((world_from_link.translation() - links[i - 1].position).norm(), 1e-12) << i;
+    EXPECT_LT((base_from_link.translation() - links[i].position).norm(), 1e-12) << i;
   }
   const sr::freebot::LinkPose end = manipulator.endEffector(state.joints);
-  EXPECT_LT((world_from_link.translation() - end.position).norm(), 1e-12);
-  EXPECT_LT(Eigen::Quaterniond(world_from_link.rotation()).angularDistance(end.orientation), 1e-12);
+  EXPECT_LT((base_from_link.translation() - end.position).norm(), 1e-12);
+  EXPECT_LT(Eigen::Quaterniond(base_from_link.rotation()).angularDistance(end.orientation), 1e-12);
 
   const auto markers = sr::conversions::freebotChainMarkers(manipulator, state, "fb/", ros::Time(1.0));
   ASSERT_EQ(markers.markers.size(), 5u);  // three spheres, two trolleys

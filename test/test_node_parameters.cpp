@@ -8,6 +8,7 @@
 #include "expect_invalid_argument.hpp"
 #include "spherical_robots/HardwareInterfaceSimConfig.h"
 #include "spherical_robots/config/hardware_interface_config.hpp"
+#include "spherical_robots/config/odometry_parameters.hpp"
 #include "spherical_robots/config/plant_loop_parameters.hpp"
 #include "spherical_robots/config/yaml_parameter_source.hpp"
 #include "spherical_robots/ros/friction_drive_controller_ros.hpp"
@@ -105,6 +106,56 @@ TEST(TerrainPlantParameters, DefaultsOverridesAndErrors) {
                           "initial_psi", "finite");
 }
 
+TEST(PlantLoopParameters, OriginOfTheRootFrameInMap) {
+  const auto p = loop("{}");
+  EXPECT_EQ(p.origin_x, 0.0);
+  EXPECT_EQ(p.origin_y, 0.0);
+  EXPECT_EQ(p.origin_yaw, 0.0);
+  const auto q = loop("origin_x: 2.5\norigin_y: -1\norigin_yaw: 1.5\n");
+  EXPECT_EQ(q.origin_x, 2.5);
+  EXPECT_EQ(q.origin_y, -1.0);
+  EXPECT_EQ(q.origin_yaw, 1.5);
+  EXPECT_INVALID_ARGUMENT(loop("origin_y: .nan\n"), "origin_y", "finite");
+}
+
+// docs/nodes.md, "Odometry and IMU": the covariance floor, the noise off and no IMU by default;
+// with noise, the default covariances are the floor plus the noise's variance.
+TEST(OdometryParameters, DefaultsNoiseAndCovariances) {
+  const auto p = fromYaml("{}", config::loadOdometryParameters);
+  for (double v : p.pose_covariance_diagonal) EXPECT_EQ(v, 1e-6);
+  for (double v : p.twist_covariance_diagonal) EXPECT_EQ(v, 1e-6);
+  EXPECT_EQ(p.noise.position, 0.0);
+  EXPECT_EQ(p.noise.yaw, 0.0);
+  EXPECT_EQ(p.noise.linear_velocity, 0.0);
+  EXPECT_EQ(p.noise.angular_velocity, 0.0);
+  EXPECT_EQ(p.noise.linear_acceleration, 0.0);
+  EXPECT_EQ(p.imu_rate, 0.0);
+  const auto q = fromYaml(
+      "noise: {position: 0.01, yaw: 0.02, linear_velocity: 0.03, angular_velocity: 0.04, "
+      "linear_acceleration: 0.5, seed: 7}\nimu_rate: 100\n",
+      config::loadOdometryParameters);
+  EXPECT_EQ(q.noise.seed, 7u);
+  EXPECT_EQ(q.imu_rate, 100.0);
+  EXPECT_DOUBLE_EQ(q.pose_covariance_diagonal[0], 1e-6 + 1e-4);
+  EXPECT_DOUBLE_EQ(q.pose_covariance_diagonal[2], 1e-6 + 1e-4);
+  EXPECT_EQ(q.pose_covariance_diagonal[3], 1e-6);  // roll: no noise
+  EXPECT_DOUBLE_EQ(q.pose_covariance_diagonal[5], 1e-6 + 4e-4);
+  EXPECT_DOUBLE_EQ(q.twist_covariance_diagonal[1], 1e-6 + 9e-4);
+  EXPECT_DOUBLE_EQ(q.twist_covariance_diagonal[5], 1e-6 + 16e-4);
+  EXPECT_DOUBLE_EQ(q.imu_linear_acceleration_covariance_diagonal[2], 1e-6 + 0.25);
+  const auto r = fromYaml("pose_covariance_diagonal: [1, 2, 3, 4, 5, 6]\n", config::loadOdometryParameters);
+  EXPECT_EQ(r.pose_covariance_diagonal[4], 5.0);
+  EXPECT_INVALID_ARGUMENT(fromYaml("pose_covariance_diagonal: [1, 2, 3]\n", config::loadOdometryParameters),
+                          "pose_covariance_diagonal", "3 entries", "expected 6");
+  EXPECT_INVALID_ARGUMENT(
+      fromYaml("twist_covariance_diagonal: [1, 2, 3, -4, 5, 6]\n", config::loadOdometryParameters),
+      "twist_covariance_diagonal", "entry 3", "-4");
+  EXPECT_INVALID_ARGUMENT(fromYaml("noise: {yaw: -0.1}\n", config::loadOdometryParameters), "noise/yaw",
+                          ">= 0");
+  EXPECT_INVALID_ARGUMENT(fromYaml("noise: {seed: 1.5}\n", config::loadOdometryParameters), "noise/seed");
+  EXPECT_INVALID_ARGUMENT(fromYaml("imu_rate: -1\n", config::loadOdometryParameters), "imu_rate");
+}
+
 TEST(PurePursuitControllerParameters, DefaultsOverridesAndErrors) {
   using P = sr::PurePursuitControllerParameters;
   const auto p = fromYaml("{}", sr::loadPurePursuitControllerParameters);
@@ -120,6 +171,7 @@ TEST(PurePursuitControllerParameters, DefaultsOverridesAndErrors) {
   EXPECT_EQ(p.teleop_tilt_gain, 2.0);
   EXPECT_EQ(p.untimed_speed, 0.1);
   EXPECT_EQ(p.path_tf_timeout, 1.0);
+  EXPECT_EQ(p.odom_frame, "odom");
   const auto q = fromYaml("mode: teleop\nlaw: paper\nrobot_type: 2R\nrate: 100\n"
                           "path: topic\nuntimed_speed: 0.25\n",
                           sr::loadPurePursuitControllerParameters);

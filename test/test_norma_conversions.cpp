@@ -4,9 +4,11 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "spherical_robots/config/robot_description.hpp"
+#include "spherical_robots/core/angles.hpp"
 #include "spherical_robots/norma/norma_simulation.hpp"
 #include "spherical_robots/ros/norma_conversions.hpp"
 
@@ -27,18 +29,48 @@ sr::norma::NormaState someState() {
 
 }  // namespace
 
-TEST(NormaStateConversion, RoundTripIsExact) {
+TEST(NormaStateConversion, CarriesTheEffortsAndTheEnergy) {
   const sr::norma::NormaState state = someState();
   const auto msg = conv::toNormaStateMsg(state, {1.25, -3.5}, 7.0, ros::Time(2.0));
   EXPECT_EQ(msg.torque, 1.25);
   EXPECT_EQ(msg.force, -3.5);
   EXPECT_EQ(msg.energy, 7.0);
-  const sr::norma::NormaMeasurement back = conv::normaMeasurementFromMsg(msg);
+  EXPECT_EQ(msg.psi, state.psi);
+}
+
+// What the plant publishes (odom, joint_states) is what the controller measures: q, q̇, X, Y to the
+// bit, ψ as the heading of the orientation (in (−π, π]), as the batch loop measures it.
+TEST(NormaMeasurementConversion, OdometryAndJointStatesCarryTheState) {
+  sr::norma::NormaState state = someState();
+  state.psi = 7.5;  // wound up over a run
+  const auto odom = conv::bodyOdometry(
+      sr::bodyMotion({state.x, state.y, 0.2}, sr::yawRotation(state.psi), {0.1, 0.2, 0.0}, {0.0, 0.0, 0.3}),
+      {}, "norma/odom", "norma/base_link", ros::Time(2.0));
+  const sr::norma::NormaMeasurement back =
+      conv::withNormaJoints(conv::normaPoseFromOdometry(odom), conv::normaJointState(state, ros::Time(2.0)));
   EXPECT_EQ(back.q, state.q);
   EXPECT_EQ(back.qd, state.qd);
   EXPECT_EQ(back.x, state.x);
   EXPECT_EQ(back.y, state.y);
-  EXPECT_EQ(back.psi, state.psi);
+  EXPECT_EQ(back.psi, sr::yawOf(sr::yawRotation(state.psi)));
+  EXPECT_NEAR(back.psi, state.psi - 2.0 * M_PI, 1e-15);
+}
+
+TEST(NormaMeasurementConversion, RejectsWhatIsNoState) {
+  nav_msgs::Odometry odom;
+  odom.pose.pose.orientation.w = 2.0;
+  EXPECT_THROW(conv::normaPoseFromOdometry(odom), std::invalid_argument);
+  odom.pose.pose.orientation.w = 1.0;
+  odom.pose.pose.position.x = std::nan("");
+  EXPECT_THROW(conv::normaPoseFromOdometry(odom), std::invalid_argument);
+  sensor_msgs::JointState joints = conv::normaJointState(someState(), ros::Time(1.0));
+  joints.name[0] = "other";
+  EXPECT_THROW(conv::withNormaJoints({}, joints), std::invalid_argument);
+  joints = conv::normaJointState(someState(), ros::Time(1.0));
+  joints.velocity[2] = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(conv::withNormaJoints({}, joints), std::invalid_argument);
+  joints.velocity.pop_back();
+  EXPECT_THROW(conv::withNormaJoints({}, joints), std::invalid_argument);
 }
 
 // Each joint of urdf/norma.urdf gets its coordinate (docs/conventions.md, "Norma"): the tilt
@@ -72,8 +104,8 @@ TEST(NormaTrackingErrorConversion, ErrorIsReferenceMinusPosition) {
   reference.x = 2.0;
   reference.y = 1.0;
   reference.x_dot = 0.5;
-  const auto msg = conv::toNormaTrackingErrorMsg(reference, 1.5, 3.0, 2.06, 0.1, ros::Time(1.0));
-  EXPECT_EQ(msg.header.frame_id, sr::kWorldFrame);
+  const auto msg = conv::toNormaTrackingErrorMsg(reference, 1.5, 3.0, 2.06, 0.1, "n/odom", ros::Time(1.0));
+  EXPECT_EQ(msg.header.frame_id, "n/odom");
   EXPECT_EQ(msg.error.x, 0.5);
   EXPECT_EQ(msg.error.y, -2.0);
   EXPECT_EQ(msg.desired_velocity.x, 0.5);
@@ -82,7 +114,7 @@ TEST(NormaTrackingErrorConversion, ErrorIsReferenceMinusPosition) {
 
 TEST(NormaPathConversion, SamplesEq52AndCloses) {
   const double period = 200.0 * M_PI;
-  const auto path = conv::lissajousPathMsg(period, 100, ros::Time(1.0));
+  const auto path = conv::lissajousPathMsg(period, 100, "n/odom", ros::Time(1.0));
   ASSERT_EQ(path.poses.size(), 101u);
   for (std::size_t k = 0; k < path.poses.size(); k += 25) {
     const sr::norma::PathPoint p = sr::norma::lissajousPath(period * k / 100);

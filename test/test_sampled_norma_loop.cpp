@@ -15,6 +15,7 @@
 #include "spherical_robots/config/norma_description.hpp"
 #include "spherical_robots/config/robot_description.hpp"
 #include "spherical_robots/core/loop_timeline.hpp"
+#include "spherical_robots/core/angles.hpp"
 #include "spherical_robots/norma/sampled_norma_loop.hpp"
 
 namespace norma = spherical_robots::norma;
@@ -33,8 +34,11 @@ norma::NormaParameters normaParameters() {
       config::readTextFile(std::string(SPHERICAL_ROBOTS_SOURCE_DIR) + "/urdf/norma.urdf"));
 }
 
+// The state as norma_controller reads it: q, q̇ from joint_states, X, Y from odom, and ψ as the
+// heading (yawOf) of the orientation norma_plant publishes (a turn by ψ about z).
 norma::NormaMeasurement measurementOf(const norma::NormaState& state) {
-  return {state.q, state.qd, state.x, state.y, state.psi};
+  const Eigen::Quaterniond published(Eigen::AngleAxisd(state.psi, Eigen::Vector3d::UnitZ()));
+  return {state.q, state.qd, state.x, state.y, spherical_robots::yawOf(published)};
 }
 
 void expectSameState(const norma::NormaState& a, const norma::NormaState& b, int step) {

@@ -28,7 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 namespace cli = spherical_robots::sphere_sim;
 
-constexpr double kRadius = 0.2;          // urdf/terrain_robot.urdf base_link sphere [m]
+constexpr double kRadius = 0.2;          // urdf/terrain_robot.urdf shell sphere [m]
 constexpr double kAmplitude = 0.2;       // config/terrain.yaml cosine a [m]
 constexpr double kFrequency = 2.0;       // cosine w [rad/m]
 constexpr double kCircleRadius = 2.0;    // [m]
@@ -195,7 +195,7 @@ TEST_F(SphereSimTest, RadiusBreakingSinglePointContactIsInvalidInput) {
   fs::copy_file(fs::path(SPHERICAL_ROBOTS_SOURCE_DIR) / "config" / "terrain.yaml",
                 config / "config" / "terrain.yaml");
   std::ofstream(config / "urdf" / "terrain_robot.urdf")
-      << "<robot name='big'><link name='base_link'><collision><geometry><sphere radius='2.0'/>"
+      << "<robot name='big'><link name='shell'><collision><geometry><sphere radius='2.0'/>"
          "</geometry></collision></link></robot>\n";
   const Process process = run({"terrain", "--robot", "3R", "--path", "circle", "--config",
                                config.string(), "--out", out_.string()});

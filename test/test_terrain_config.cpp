@@ -335,7 +335,7 @@ TEST(MakePath, BuildsTheNamedPathFromTheConfigAndRejectsUnknownNames) {
 // ------------------------------------------------------------------------------------------
 // sphereRadiusFromUrdf.
 
-std::string urdfWith(const std::string& link_body, const std::string& link = "base_link") {
+std::string urdfWith(const std::string& link_body, const std::string& link = "shell") {
   return "<?xml version=\"1.0\"?>\n<robot name=\"r\">\n  <link name=\"" + link + "\">\n" + link_body +
          "  </link>\n</robot>\n";
 }
@@ -345,7 +345,7 @@ std::string geometry(const std::string& element, const std::string& shape) {
 }
 
 TEST(SphereRadiusFromUrdf, ReadsTheCollisionSphere) {
-  EXPECT_EQ(sphereRadiusFromUrdf(urdfWith(geometry("collision", "<sphere radius=\"0.2\"/>"))), 0.2);
+  EXPECT_EQ(sphereRadiusFromUrdf(urdfWith(geometry("collision", "<sphere radius=\"0.2\"/>")), "shell"), 0.2);
   EXPECT_EQ(sphereRadiusFromUrdf(urdfWith(geometry("collision", "<sphere radius=\"0.35\"/>"), "shell"),
                                  "shell"),
             0.35);
@@ -354,23 +354,23 @@ TEST(SphereRadiusFromUrdf, ReadsTheCollisionSphere) {
 TEST(SphereRadiusFromUrdf, PrefersCollisionOverVisualAndFallsBackToVisual) {
   const std::string both = geometry("visual", "<sphere radius=\"0.25\"/>") +
                            geometry("collision", "<sphere radius=\"0.2\"/>");
-  EXPECT_EQ(sphereRadiusFromUrdf(urdfWith(both)), 0.2);
-  EXPECT_EQ(sphereRadiusFromUrdf(urdfWith(geometry("visual", "<sphere radius=\"0.25\"/>"))), 0.25);
+  EXPECT_EQ(sphereRadiusFromUrdf(urdfWith(both), "shell"), 0.2);
+  EXPECT_EQ(sphereRadiusFromUrdf(urdfWith(geometry("visual", "<sphere radius=\"0.25\"/>")), "shell"), 0.25);
 }
 
 TEST(SphereRadiusFromUrdf, RejectsWhatIsNotAPositiveSphere) {
   const std::string sphere = geometry("collision", "<sphere radius=\"0.2\"/>");
-  EXPECT_THROW(sphereRadiusFromUrdf(urdfWith(geometry("collision", "<box size=\"0.2 0.2 0.2\"/>"))),
+  EXPECT_THROW(sphereRadiusFromUrdf(urdfWith(geometry("collision", "<box size=\"0.2 0.2 0.2\"/>")), "shell"),
                std::invalid_argument);
   EXPECT_THROW(sphereRadiusFromUrdf(urdfWith(sphere), "missing_link"), std::invalid_argument);
-  EXPECT_THROW(sphereRadiusFromUrdf(urdfWith(geometry("collision", "<sphere radius=\"-0.2\"/>"))),
+  EXPECT_THROW(sphereRadiusFromUrdf(urdfWith(geometry("collision", "<sphere radius=\"-0.2\"/>")), "shell"),
                std::invalid_argument);
-  EXPECT_THROW(sphereRadiusFromUrdf(urdfWith(geometry("collision", "<sphere radius=\"0\"/>"))),
+  EXPECT_THROW(sphereRadiusFromUrdf(urdfWith(geometry("collision", "<sphere radius=\"0\"/>")), "shell"),
                std::invalid_argument);
-  EXPECT_THROW(sphereRadiusFromUrdf(urdfWith("")), std::invalid_argument);  // no geometry at all
-  EXPECT_THROW(sphereRadiusFromUrdf("<robot name=\"r\"><link name=\"base_link\">"), std::invalid_argument);
-  EXPECT_THROW(sphereRadiusFromUrdf("not xml at all"), std::invalid_argument);
-  EXPECT_THROW(sphereRadiusFromUrdf(""), std::invalid_argument);
+  EXPECT_THROW(sphereRadiusFromUrdf(urdfWith(""), "shell"), std::invalid_argument);  // no geometry at all
+  EXPECT_THROW(sphereRadiusFromUrdf("<robot name=\"r\"><link name=\"shell\">", "shell"), std::invalid_argument);
+  EXPECT_THROW(sphereRadiusFromUrdf("not xml at all", "shell"), std::invalid_argument);
+  EXPECT_THROW(sphereRadiusFromUrdf("", "shell"), std::invalid_argument);
 }
 
 }  // namespace

@@ -109,45 +109,63 @@ TEST(TerrainStateConversion, GeometryRoundTrip) {
 
   const auto msg = conv::toTerrainStateMsg(RobotType::ThreeAxisRolling,
                                            sr::terrain::ContactModel::Paper, state, geometry,
-                                           {1.0, 2.0, 3.0}, ros::Time(2.0));
+                                           {1.0, 2.0, 3.0}, "sphere/odom", ros::Time(2.0));
   EXPECT_EQ(msg.robot_type, "3R");
   EXPECT_EQ(msg.contact_model, "paper");
-  EXPECT_EQ(msg.header.frame_id, "world");
+  EXPECT_EQ(msg.header.frame_id, "sphere/odom");
   EXPECT_EQ(msg.turn_rate, 3.0);
-
-  const auto back = conv::contactGeometryFromMsg(msg, kMaxPosition);
-  EXPECT_TRUE(back.contact_point.isApprox(geometry.contact_point, 1e-12));
-  EXPECT_TRUE(back.centre.isApprox(geometry.centre, 1e-12));
-  EXPECT_TRUE(back.heading_frame.isApprox(geometry.heading_frame, 1e-12));
-  EXPECT_TRUE(back.gradient.isApprox(geometry.gradient, 1e-12));
+  EXPECT_EQ(msg.centre.z, geometry.centre.z());
+  EXPECT_EQ(msg.heading.y, geometry.heading_frame(1, 0));
 }
 
-TEST(TerrainStateConversion, RejectsBadGeometry) {
-  spherical_robots::TerrainState msg;
-  msg.normal.z = 1.0;
-  msg.heading.x = 1.0;
-  EXPECT_NO_THROW(conv::contactGeometryFromMsg(msg, kMaxPosition));
+// What the plant publishes is what the controller reads, double for double, so the stack's
+// controller sees the state the batch run's does (terrain::SampledTerrainLoop).
+TEST(OdometryConversion, BodyPoseRoundTripsExactly) {
+  const sr::terrain::CosineSurface surface(0.2, 2.0);
+  const sr::terrain::BodyFrame frame(surface, 0.2);
+  const sr::terrain::BodyPose pose =
+      frame.pose(sr::terrain::contactGeometry(surface, 0.2, {0.7, -0.4, 2.9, 0.0}));
+  const auto msg = conv::bodyOdometry({pose.centre, pose.orientation, {}, {}}, {}, "sphere/odom",
+                                      "sphere/base_link", ros::Time(2.0));
+  const sr::terrain::BodyPose back = conv::bodyPoseFromOdometry(msg, kMaxPosition);
+  EXPECT_EQ(back.centre, pose.centre);
+  EXPECT_EQ(back.orientation.coeffs(), pose.orientation.coeffs());
+}
 
+TEST(OdometryConversion, RejectsAPoseThatIsNotOne) {
+  nav_msgs::Odometry msg;
+  msg.pose.pose.orientation.w = 1.0;
+  EXPECT_NO_THROW(conv::bodyPoseFromOdometry(msg, kMaxPosition));
   auto bad = msg;
-  bad.contact_point.y = kNaN;
-  EXPECT_THROW(conv::contactGeometryFromMsg(bad, kMaxPosition), std::invalid_argument);
+  bad.pose.pose.position.y = kNaN;
+  EXPECT_INVALID_ARGUMENT(conv::bodyPoseFromOdometry(bad, kMaxPosition), "pose.position.y");
   bad = msg;
-  bad.contact_point.x = 1e300;
-  EXPECT_INVALID_ARGUMENT(conv::contactGeometryFromMsg(bad, kMaxPosition), "contact_point.x",
-                          "1000");
+  bad.pose.pose.position.x = 1e300;
+  EXPECT_INVALID_ARGUMENT(conv::bodyPoseFromOdometry(bad, kMaxPosition), "pose.position.x", "1000");
   bad = msg;
-  bad.centre.z = -2e3;
-  EXPECT_INVALID_ARGUMENT(conv::contactGeometryFromMsg(bad, kMaxPosition), "centre.z");
+  bad.pose.pose.orientation.w = 2.0;
+  EXPECT_INVALID_ARGUMENT(conv::bodyPoseFromOdometry(bad, kMaxPosition), "pose.orientation", "norm");
   bad = msg;
-  bad.normal.z = 2.0;  // not unit
-  EXPECT_THROW(conv::contactGeometryFromMsg(bad, kMaxPosition), std::invalid_argument);
+  bad.pose.pose.orientation.z = kNaN;
+  EXPECT_INVALID_ARGUMENT(conv::bodyPoseFromOdometry(bad, kMaxPosition), "pose.orientation");
+}
+
+TEST(TiltConversion, RoundTripsAndRejectsWhatIsNoTilt) {
+  const auto msg = conv::tiltJointState(-0.4, 0.25, ros::Time(2.0));
+  EXPECT_EQ(msg.name, std::vector<std::string>{conv::kTiltJoint});
+  EXPECT_EQ(msg.velocity, std::vector<double>{0.25});
+  EXPECT_EQ(conv::tiltFromJointState(msg), -0.4);
+  auto bad = msg;
+  bad.name = {"theta"};
+  EXPECT_INVALID_ARGUMENT(conv::tiltFromJointState(bad), "lacks joint 'tilt'");
   bad = msg;
-  bad.heading.x = 0.0;  // h = n
-  bad.heading.z = 1.0;
-  EXPECT_THROW(conv::contactGeometryFromMsg(bad, kMaxPosition), std::invalid_argument);
+  bad.position.clear();
+  EXPECT_INVALID_ARGUMENT(conv::tiltFromJointState(bad), "no position");
   bad = msg;
-  bad.normal.z = -1.0;  // points down
-  EXPECT_THROW(conv::contactGeometryFromMsg(bad, kMaxPosition), std::invalid_argument);
+  bad.position = {2.0};
+  EXPECT_INVALID_ARGUMENT(conv::tiltFromJointState(bad), "tilt");
+  bad.position = {kNaN};
+  EXPECT_THROW(conv::tiltFromJointState(bad), std::invalid_argument);
 }
 
 nav_msgs::Path pathMessage(const std::string& frame) {
@@ -184,15 +202,15 @@ TEST(PathConversion, PosesBecomeStampedPointsInTheFixedFrame) {
 
 TEST(PathConversion, RejectsAPoseInAnotherFrameAndBadPositions) {
   const Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
-  nav_msgs::Path other_frame = pathMessage("world");
+  nav_msgs::Path other_frame = pathMessage("sphere/odom");
   other_frame.poses[1].header.frame_id = "odom";
   EXPECT_INVALID_ARGUMENT(conv::stampedPointsFromPath(other_frame, identity, kMaxPosition),
-                          "poses[1]", "'odom'", "'world'");
-  nav_msgs::Path not_finite = pathMessage("world");
+                          "poses[1]", "'odom'", "'sphere/odom'");
+  nav_msgs::Path not_finite = pathMessage("sphere/odom");
   not_finite.poses[2].pose.position.x = kNaN;
   EXPECT_INVALID_ARGUMENT(conv::stampedPointsFromPath(not_finite, identity, kMaxPosition),
                           "poses[2].pose.position.x", "nan");
-  nav_msgs::Path far = pathMessage("world");
+  nav_msgs::Path far = pathMessage("sphere/odom");
   far.poses[0].pose.position.y = 1e300;
   EXPECT_INVALID_ARGUMENT(conv::stampedPointsFromPath(far, identity, kMaxPosition),
                           "poses[0].pose.position.y", "1000");
@@ -205,7 +223,7 @@ TEST(PathConversion, RejectsAPoseInAnotherFrameAndBadPositions) {
 TEST(Visualisation, SampledPathClosesOnTheSurface) {
   const sr::terrain::CosineSurface surface(0.2, 2.0);
   const sr::terrain::CirclePath circle(2.0, 0.05);
-  const auto path = conv::sampledPath(circle, surface, 100, "world", ros::Time(1.0));
+  const auto path = conv::sampledPath(circle, surface, 100, "sphere/odom", ros::Time(1.0));
   ASSERT_EQ(path.poses.size(), 100u);
   for (const auto& pose : path.poses) {
     const auto& p = pose.pose.position;
@@ -214,13 +232,13 @@ TEST(Visualisation, SampledPathClosesOnTheSurface) {
   }
   EXPECT_NEAR(path.poses.front().pose.position.x, path.poses.back().pose.position.x, 1e-9);
   EXPECT_NEAR(path.poses.front().pose.position.y, path.poses.back().pose.position.y, 1e-9);
-  EXPECT_THROW(conv::sampledPath(circle, surface, 1, "world", {}), std::invalid_argument);
+  EXPECT_THROW(conv::sampledPath(circle, surface, 1, "sphere/odom", {}), std::invalid_argument);
 }
 
 TEST(Visualisation, SurfaceMeshCoversTheSquare) {
   const sr::terrain::CosineSurface surface(0.2, 2.0);
   const Eigen::AlignedBox2d square(Eigen::Vector2d(-3.0, -3.0), Eigen::Vector2d(3.0, 3.0));
-  const auto mesh = conv::surfaceMesh(surface, square, 0.1, "world", ros::Time(1.0));
+  const auto mesh = conv::surfaceMesh(surface, square, 0.1, "sphere/odom", ros::Time(1.0));
   EXPECT_EQ(mesh.type, visualization_msgs::Marker::TRIANGLE_LIST);
   ASSERT_EQ(mesh.points.size(), 60u * 60u * 6u);
   EXPECT_EQ(mesh.colors.size(), mesh.points.size());
@@ -229,9 +247,9 @@ TEST(Visualisation, SurfaceMeshCoversTheSquare) {
     EXPECT_LE(std::abs(p.y), 3.0 + 1e-12);
     EXPECT_NEAR(p.z, surface.height(p.x, p.y), 1e-12);
   }
-  EXPECT_THROW(conv::surfaceMesh(surface, square, 0.0, "world", {}), std::invalid_argument);
-  EXPECT_THROW(conv::surfaceMesh(surface, square, 1e-4, "world", {}), std::invalid_argument);
-  EXPECT_THROW(conv::surfaceMesh(surface, Eigen::AlignedBox2d(), 0.1, "world", {}),
+  EXPECT_THROW(conv::surfaceMesh(surface, square, 0.0, "sphere/odom", {}), std::invalid_argument);
+  EXPECT_THROW(conv::surfaceMesh(surface, square, 1e-4, "sphere/odom", {}), std::invalid_argument);
+  EXPECT_THROW(conv::surfaceMesh(surface, Eigen::AlignedBox2d(), 0.1, "sphere/odom", {}),
                std::invalid_argument);
 }
 
@@ -244,7 +262,7 @@ TEST(Visualisation, SurfaceMeshOfAHeightMapSpansItsExtent) {
   grid.source = "test grid";
   grid.heights = Eigen::MatrixXd::Random(13, 9) * 0.01;
   const sr::terrain::HeightMapSurface map(grid);
-  const auto mesh = conv::surfaceMesh(map, *map.domain(), 0.25, "world", ros::Time(1.0));
+  const auto mesh = conv::surfaceMesh(map, *map.domain(), 0.25, "sphere/odom", ros::Time(1.0));
   ASSERT_EQ(mesh.points.size(), 5u * 4u * 6u);  // ceil(1.2 / 0.25) x ceil(0.8 / 0.25) cells
   double x_min = 1e9, x_max = -1e9, y_min = 1e9, y_max = -1e9;
   for (const auto& p : mesh.points) {

@@ -196,21 +196,6 @@ TEST_P(KinematicsOnCosine, GeometryPutsTheContactOnTheSurfaceAndTheCentreAtPPlus
   }
 }
 
-TEST_P(KinematicsOnCosine, GeometryFromTheMessagesAxesIsTheGeometryLessItsHessian) {
-  for (auto s : kStates) {
-    s = stateFor(s);
-    const ContactGeometry g = kin_.geometry(s);
-    const ContactGeometry rebuilt = contactGeometryFromAxes(g.contact_point, g.centre,
-                                                            g.heading_frame.col(2), g.heading_frame.col(0));
-    EXPECT_EQ(rebuilt.contact_point, g.contact_point);
-    EXPECT_EQ(rebuilt.centre, g.centre);
-    EXPECT_LE((rebuilt.heading_frame - headingFrameOf(surface_.gradient(s.x, s.y), s.psi))
-                  .cwiseAbs().maxCoeff(), 1e-14);
-    EXPECT_LE((rebuilt.gradient - surface_.gradient(s.x, s.y)).norm(), 1e-14);
-    EXPECT_EQ(rebuilt.hessian, Eigen::Matrix2d::Zero());  // a message does not carry it
-  }
-}
-
 TEST(ActuatedRates, ListAndDriveRatesRoundTripInTheActuatorNamesOrder) {
   const DriveRates rates{1.5, -2.5, 3.5};
   const std::vector<std::pair<RobotType, std::vector<std::string>>> names = {

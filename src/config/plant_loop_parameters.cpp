@@ -36,6 +36,9 @@ PlantLoopParameters loadPlantLoopParameters(const ParameterSource& source,
   }
   p.wait_for_subscribers = wholeNumber(source, "wait_for_subscribers", p.wait_for_subscribers, 0);
   p.start_timeout = positiveNumber(source, "start_timeout", p.start_timeout);
+  p.origin_x = finiteNumber(source, "origin_x", p.origin_x);
+  p.origin_y = finiteNumber(source, "origin_y", p.origin_y);
+  p.origin_yaw = finiteNumber(source, "origin_yaw", p.origin_yaw);
   return p;
 }
 

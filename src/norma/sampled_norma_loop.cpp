@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "spherical_robots/core/angles.hpp"
 #include "spherical_robots/core/validation.hpp"
 
 namespace spherical_robots::norma {
@@ -56,13 +57,15 @@ Nanoseconds checkedStepNanoseconds(double step) {
   return ns;
 }
 
+/// The state as the controller reads it from joint_states (q, q̇) and odom: X, Y, and ψ as the
+/// heading of the orientation the plant publishes (yawRotation, read back by yawOf: in (−π, π]).
 NormaMeasurement measurementOf(const NormaState& state) {
   NormaMeasurement m;
   m.q = state.q;
   m.qd = state.qd;
   m.x = state.x;
   m.y = state.y;
-  m.psi = state.psi;
+  m.psi = yawOf(yawRotation(state.psi));
   return m;
 }
 
@@ -97,7 +100,7 @@ const SampledStep& SampledNormaLoop::step() {
                                    config_.step);
   timeline_.complete(now);
 
-  // pure_pursuit_controller (norma_controller_ros.cpp, control): a rejected state commands nothing.
+  // norma_controller (norma_controller_ros.cpp, control): a rejected state commands nothing.
   std::optional<ControlOutput> command;
   try {
     command = control_.step(t, measurementOf(state_));

@@ -98,19 +98,41 @@ geometry_msgs::PoseStamped toPoseStamped(const Eigen::Vector3d& position,
   return msg;
 }
 
-nav_msgs::Odometry toOdometry(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
-                              const Eigen::Vector3d& linear_velocity,
-                              const Eigen::Vector3d& angular_velocity, const std::string& frame,
-                              const std::string& child, const ros::Time& stamp) {
-  const Eigen::Matrix3d world_from_child = orientation.normalized().toRotationMatrix();
+nav_msgs::Odometry bodyOdometry(const BodyMotion& motion, const config::OdometryParameters& odometry,
+                                const std::string& frame, const std::string& child,
+                                const ros::Time& stamp) {
   nav_msgs::Odometry msg;
   msg.header.stamp = stamp;
   msg.header.frame_id = frame;
   msg.child_frame_id = child;
-  msg.pose.pose.position = toPoint(position);
-  msg.pose.pose.orientation = toQuaternion(orientation);
-  msg.twist.twist.linear = toVector3(world_from_child.transpose() * linear_velocity);
-  msg.twist.twist.angular = toVector3(world_from_child.transpose() * angular_velocity);
+  msg.pose.pose.position = toPoint(motion.position);
+  msg.pose.pose.orientation.x = motion.orientation.x();
+  msg.pose.pose.orientation.y = motion.orientation.y();
+  msg.pose.pose.orientation.z = motion.orientation.z();
+  msg.pose.pose.orientation.w = motion.orientation.w();
+  msg.twist.twist.linear = toVector3(motion.linear);
+  msg.twist.twist.angular = toVector3(motion.angular);
+  for (int i = 0; i < 6; ++i) {  // row-major 6 x 6
+    msg.pose.covariance[7 * i] = odometry.pose_covariance_diagonal[i];
+    msg.twist.covariance[7 * i] = odometry.twist_covariance_diagonal[i];
+  }
+  return msg;
+}
+
+sensor_msgs::Imu toImu(const ImuReading& reading, const config::OdometryParameters& odometry,
+                       const std::string& frame, const ros::Time& stamp) {
+  sensor_msgs::Imu msg;
+  msg.header.stamp = stamp;
+  msg.header.frame_id = frame;
+  msg.orientation = toQuaternion(reading.orientation);
+  msg.angular_velocity = toVector3(reading.angular_velocity);
+  msg.linear_acceleration = toVector3(reading.linear_acceleration);
+  for (int i = 0; i < 3; ++i) {  // row-major 3 x 3
+    msg.orientation_covariance[4 * i] = odometry.imu_orientation_covariance_diagonal[i];
+    msg.angular_velocity_covariance[4 * i] = odometry.imu_angular_velocity_covariance_diagonal[i];
+    msg.linear_acceleration_covariance[4 * i] =
+        odometry.imu_linear_acceleration_covariance_diagonal[i];
+  }
   return msg;
 }
 
@@ -130,9 +152,9 @@ std::vector<double> valuesByName(const sensor_msgs::JointState& msg, const std::
   for (const std::string& name : names) {
     const auto found = std::find(msg.name.begin(), msg.name.end(), name);
     if (found == msg.name.end())
-      throw std::invalid_argument("JointState lacks actuator '" + name + "'");
+      throw std::invalid_argument("JointState lacks '" + name + "'");
     const double value = values[found - msg.name.begin()];
-    requireMagnitudeAtMost(value, max_magnitude, what + " of actuator '" + name + "'");
+    requireMagnitudeAtMost(value, max_magnitude, what + " of '" + name + "'");
     found_values.push_back(value);
   }
   return found_values;
@@ -148,6 +170,11 @@ std::vector<double> velocitiesByName(const sensor_msgs::JointState& msg,
 std::vector<double> effortsByName(const sensor_msgs::JointState& msg,
                                   const std::vector<std::string>& names, double max_effort) {
   return valuesByName(msg, msg.effort, "effort", names, max_effort);
+}
+
+std::vector<double> positionsByName(const sensor_msgs::JointState& msg,
+                                    const std::vector<std::string>& names, double max_position) {
+  return valuesByName(msg, msg.position, "position", names, max_position);
 }
 
 sensor_msgs::JointState velocityJointState(const std::vector<std::string>& names,
@@ -174,8 +201,8 @@ Eigen::Isometry3d fromTransform(const geometry_msgs::Transform& transform, const
   return isometry;
 }
 
-Eigen::Quaterniond fromQuaternion(const geometry_msgs::Quaternion& q, const std::string& field,
-                                  double tolerance) {
+Eigen::Quaterniond checkedQuaternion(const geometry_msgs::Quaternion& q, const std::string& field,
+                                     double tolerance) {
   const Eigen::Quaterniond value(q.w, q.x, q.y, q.z);
   if (!value.coeffs().allFinite())
     throw std::invalid_argument(field + " has a non-finite coefficient");
@@ -185,7 +212,12 @@ Eigen::Quaterniond fromQuaternion(const geometry_msgs::Quaternion& q, const std:
          << tolerance << ")";
     throw std::invalid_argument(what.str());
   }
-  return value.normalized();
+  return value;
+}
+
+Eigen::Quaterniond fromQuaternion(const geometry_msgs::Quaternion& q, const std::string& field,
+                                  double tolerance) {
+  return checkedQuaternion(q, field, tolerance).normalized();
 }
 
 geometry_msgs::PointStamped toPointStamped(const Eigen::Vector3d& p, const std::string& frame,

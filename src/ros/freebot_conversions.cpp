@@ -134,9 +134,7 @@ std::string freebotLinkFrame(const std::string& prefix, std::size_t i) {
 std::vector<geometry_msgs::TransformStamped> freebotChainTransforms(
     const freebot::SrcManipulator& manipulator, const freebot::ChainState& state,
     const std::string& prefix, const ros::Time& stamp) {
-  std::vector<geometry_msgs::TransformStamped> transforms = {
-      toTransform(Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity(), kWorldFrame,
-                  freebotLinkFrame(prefix, 0), stamp)};
+  std::vector<geometry_msgs::TransformStamped> transforms;
   for (std::size_t i = 1; i <= state.joints.size(); ++i) {
     const freebot::SrcJointState& joint = state.joints[i - 1];
     transforms.push_back(toTransform(manipulator.joint(i - 1).position(joint),

@@ -27,6 +27,7 @@ FreebotIkParameters loadFreebotIkParameters(const config::ParameterSource& stack
   p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);
   p.max_stamp_skew = config::positiveNumber(node, "max_stamp_skew", p.max_stamp_skew);
   p.max_goal_distance = config::positiveNumber(node, "max_goal_distance", p.max_goal_distance);
+  p.base_frame = conversions::freebotLinkFrame(node.text("frame_prefix").value_or(""), 0);
   return p;
 }
 
@@ -80,7 +81,7 @@ void FreebotIkRos::drive(const spherical_robots::FreebotState& msg) {
 }
 
 freebot::GoalPose FreebotIkRos::goalPose(const geometry_msgs::PoseStamped& target) const {
-  return conversions::goalPoseFromMsg(target, kWorldFrame, parameters_.max_goal_distance,
+  return conversions::goalPoseFromMsg(target, parameters_.base_frame, parameters_.max_goal_distance,
                                       kGoalUnitTolerance);
 }
 

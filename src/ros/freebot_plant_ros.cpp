@@ -9,6 +9,7 @@
 
 #include "spherical_robots/FreebotState.h"
 #include "spherical_robots/config/freebot_config.hpp"
+#include "spherical_robots/config/freebot_description.hpp"
 #include "spherical_robots/ros/freebot_conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 
@@ -16,8 +17,9 @@ namespace spherical_robots {
 namespace {
 
 
-PlantLoop::Defaults loopDefaults() {
+PlantLoop::Defaults loopDefaults(const std::string& base_frame) {
   PlantLoop::Defaults defaults;
+  defaults.root_frame = base_frame;
   defaults.task = "freebot plant";
   defaults.hardware_id = "FreeBOT";
   defaults.parameters.step = 0.01;
@@ -41,7 +43,9 @@ FreebotPlantRos::FreebotPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : parameters_(loadFreebotPlantParameters(RosParameterSource(nh), RosParameterSource(pnh))),
       state_(chain().alignedState()),
       wheels_(chain().moduleCount()),
-      loop_(nh, pnh, loopDefaults()) {
+      loop_(nh, pnh, loopDefaults(conversions::freebotLinkFrame(parameters_.frame_prefix, 0))) {
+  // For rviz's RobotModel and any other user: the very radii this node integrates.
+  nh.setParam("robot_description", config::freebotRobotDescription(chain().manipulator().radii()));
   state_pub_ = loop_.advertise<spherical_robots::FreebotState>("freebot_state");
   marker_pub_ = loop_.advertise<visualization_msgs::MarkerArray>("freebot_markers");
   std::ostringstream radii;
@@ -73,7 +77,7 @@ void FreebotPlantRos::advance(double elapsed, bool actuators_fresh) {
 
 void FreebotPlantRos::publishEveryStep(const ros::Time& now, bool /*actuators_fresh*/) {
   const freebot::LinkPose end = chain().manipulator().endEffector(state_.joints);
-  state_pub_.publish(conversions::toFreebotStateMsg(state_, end, kWorldFrame, now));
+  state_pub_.publish(conversions::toFreebotStateMsg(state_, end, loop_.rootFrame(), now));
 }
 
 std::optional<PlantModel::Pose> FreebotPlantRos::trailPose() const {

@@ -82,6 +82,7 @@ NormaControllerParameters loadNormaControllerParameters(const config::ParameterS
   p.publish_rate = config::positiveNumber(node, "publish_rate", p.publish_rate);
   p.max_stamp_skew = config::positiveNumber(node, "max_stamp_skew", p.max_stamp_skew);
   p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);
+  p.odom_frame = node.text("odom_frame").value_or(p.odom_frame);
   return p;
 }
 
@@ -90,22 +91,27 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       robot_(fromRobotDescription(nh, config::normaParametersFromUrdf)),
       loop_(norma::NormaController(robot_, parameters_.controller, parameters_.gains),
             parameters_.limits),
-      input_(nh.resolveName("norma_state"), parameters_.input_timeout),
+      input_(nh.resolveName("joint_states"), parameters_.input_timeout),
+      odom_input_(nh.resolveName("odom"), parameters_.input_timeout),
       actuator_input_(nh.resolveName("actuators/state"), parameters_.input_timeout),
-      work_([this](const spherical_robots::NormaState& msg) { control(msg); }, step_publications_),
+      work_([this](const sensor_msgs::JointState& msg) { control(msg); }, step_publications_),
       updater_(nh, pnh, pnh.getNamespace()) {
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
   error_pub_ = step_publications_.advertise<spherical_robots::TrackingError>(nh, "tracking_error");
   target_pub_ = step_publications_.advertise<geometry_msgs::PointStamped>(nh, "target");
   desired_path_pub_ = nh.advertise<nav_msgs::Path>("desired_path", 1, true);
   desired_path_pub_.publish(
-      conversions::lissajousPathMsg(kPathPeriod, kDesiredPathSamples, ros::Time::now()));
-  state_sub_ = nh.subscribe("norma_state", kLoopQueueSize, &NormaControllerRos::onState, this);
+      conversions::lissajousPathMsg(kPathPeriod, kDesiredPathSamples, parameters_.odom_frame,
+                                    ros::Time::now()));
+  // Feedback through standard messages only: the internal joints drive the loop at the plant's
+  // rate, with the latest odometry (any source's) for the pose.
+  joint_sub_ = nh.subscribe("joint_states", kLoopQueueSize, &NormaControllerRos::onJointStates, this);
+  odom_sub_ = nh.subscribe("odom", kLoopQueueSize, &NormaControllerRos::onOdometry, this);
   actuator_sub_ = nh.subscribe("actuators/state", kLoopQueueSize, &NormaControllerRos::onActuatorState, this);
   updater_.setHardwareID("Norma");
   updater_.add("norma controller", this, &NormaControllerRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
-  work_.join(nh, pnh, {state_sub_, actuator_sub_});
+  work_.join(nh, pnh, {joint_sub_, odom_sub_, actuator_sub_});
   // The server starts from the gains loaded above (config/norma.yaml), not from the .cfg's.
   reconfigure_ = std::make_unique<dynamic_reconfigure::Server<GainsConfig>>(pnh);
   reconfigure_->updateConfig(reconfigureConfigOf(parameters_.gains));
@@ -113,7 +119,8 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       [this](GainsConfig& config, std::uint32_t level) { onReconfigure(config, level); });
   ROS_INFO_STREAM("Norma controller: "
                   << norma::toString(controller().kind())
-                  << ", path eq 52 from the first state on " << input_.topic());
+                  << ", path eq 52 from the first state on " << input_.topic() << " and "
+                  << odom_input_.topic());
 }
 
 void NormaControllerRos::onReconfigure(GainsConfig& config, std::uint32_t /*level*/) {
@@ -143,19 +150,38 @@ void NormaControllerRos::onActuatorState(const sensor_msgs::JointState& msg) {
 
 ros::Time NormaControllerRos::now() const { return workingTime(work_.participant()); }
 
-void NormaControllerRos::onState(const spherical_robots::NormaState& msg) {
-  work_.arrived(msg, state_sub_.getTopic());
+void NormaControllerRos::onJointStates(const sensor_msgs::JointState& msg) {
+  work_.arrived(msg, joint_sub_.getTopic());
 }
 
-void NormaControllerRos::control(const spherical_robots::NormaState& msg) {
+void NormaControllerRos::onOdometry(const nav_msgs::Odometry& msg) {
+  try {
+    const std::string stamp_problem = stampProblem(msg.header.stamp, now(), parameters_.max_stamp_skew);
+    if (!stamp_problem.empty()) throw std::invalid_argument("odom " + stamp_problem);
+    if (msg.header.frame_id != parameters_.odom_frame)
+      throw std::invalid_argument("odom in frame '" + msg.header.frame_id + "', the path is in '" +
+                                  parameters_.odom_frame + "' (~odom_frame)");
+    pose_ = conversions::normaPoseFromOdometry(msg);
+    odom_input_.accept(now());
+  } catch (const std::invalid_argument& e) {
+    odom_input_.reject(e.what());  // the last good pose stays
+  }
+  if (work_.participant()) work_.participant()->received(odom_sub_.getTopic(), msg.header.stamp);
+}
+
+void NormaControllerRos::control(const sensor_msgs::JointState& msg) {
   const ros::Time now = msg.header.stamp;
   norma::ControlOutput output;
+  norma::NormaMeasurement measured;
   try {
     // The loop validates the state before it changes anything; the stamp is checked against
     // the clock first, so a state stamped in the future cannot move the path clock.
     const std::string stamp_problem = stampProblem(now, this->now(), parameters_.max_stamp_skew);
-    if (!stamp_problem.empty()) throw std::invalid_argument("norma_state " + stamp_problem);
-    output = loop_.step(now.toSec(), conversions::normaMeasurementFromMsg(msg));
+    if (!stamp_problem.empty()) throw std::invalid_argument("joint_states " + stamp_problem);
+    if (!pose_ || !odom_input_.fresh(this->now()))
+      throw std::invalid_argument("no fresh odom for the pose");
+    measured = conversions::withNormaJoints(*pose_, msg);
+    output = loop_.step(now.toSec(), measured);
   } catch (const std::invalid_argument& e) {
     input_.reject(e.what());  // nothing commanded: the hardware keeps the last good efforts
     return;
@@ -174,11 +200,13 @@ void NormaControllerRos::control(const spherical_robots::NormaState& msg) {
   if (periodDue(last_publish_, now, 1.0 / parameters_.publish_rate)) {
     last_publish_ = now;
     const norma::PathPoint reference = loop_.reference(now.toSec());
-    const double zeta = norma::kinematicLayer(controller().gains().kinematic, robot_.R, msg.x,
-                                              msg.y, msg.psi, reference).zeta;
+    const double zeta = norma::kinematicLayer(controller().gains().kinematic, robot_.R, measured.x,
+                                              measured.y, measured.psi, reference).zeta;
     error_pub_.publish(
-        conversions::toNormaTrackingErrorMsg(reference, msg.x, msg.y, output.error, zeta, now));
-    target_pub_.publish(conversions::toPointStamped({reference.x, reference.y, 0.0}, kWorldFrame, now));
+        conversions::toNormaTrackingErrorMsg(reference, measured.x, measured.y, output.error, zeta,
+                                             parameters_.odom_frame, now));
+    target_pub_.publish(conversions::toPointStamped({reference.x, reference.y, 0.0},
+                                                    parameters_.odom_frame, now));
   }
 }
 
@@ -200,6 +228,7 @@ void NormaControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& s
     status.mergeSummary(diagnostic_msgs::DiagnosticStatus::WARN, "commands late: lower the speed-up");
   max_state_age_ = 0.0;
   input_.report(status, now());
+  odom_input_.report(status, now());
   actuator_input_.reportRejections(status);
 }
 

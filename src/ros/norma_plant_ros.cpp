@@ -1,6 +1,5 @@
 #include "spherical_robots/ros/norma_plant_ros.hpp"
 
-#include <nav_msgs/Odometry.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include <vector>
 
 #include "spherical_robots/config/norma_config.hpp"
+#include "spherical_robots/core/angles.hpp"
 #include "spherical_robots/config/norma_description.hpp"
 #include "spherical_robots/ros/norma_conversions.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
@@ -16,8 +16,9 @@
 namespace spherical_robots {
 namespace {
 
-PlantLoop::Defaults loopDefaults() {
+PlantLoop::Defaults loopDefaults(const std::string& odom_frame) {
   PlantLoop::Defaults defaults;
+  defaults.root_frame = odom_frame;
   defaults.task = "norma plant";
   defaults.hardware_id = "Norma";
   defaults.parameters.step = 0.001;
@@ -37,17 +38,19 @@ NormaPlantParameters loadNormaPlantParameters(const config::ParameterSource& nod
   p.initial_psi = model.initial_psi;
   p.frame_prefix = node.text("frame_prefix").value_or("");
   p.max_actuator_effort = config::positiveNumber(node, "max_actuator_effort", p.max_actuator_effort);
+  p.odometry = config::loadOdometryParameters(node);
   return p;
 }
 
 NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : parameters_(loadNormaPlantParameters(RosParameterSource(pnh))),
       dynamics_(fromRobotDescription(nh, config::normaParametersFromUrdf), parameters_.variant),
+      odom_frame_(parameters_.frame_prefix + "odom"),
       base_frame_(parameters_.frame_prefix + "base_link"),
-      loop_(nh, pnh, loopDefaults()) {
+      loop_(nh, pnh, loopDefaults(odom_frame_)) {
   state_.psi = parameters_.initial_psi;
   state_pub_ = loop_.advertise<spherical_robots::NormaState>("norma_state");
-  odom_pub_ = loop_.advertise<nav_msgs::Odometry>("odom");
+  odometry_.emplace(loop_, parameters_.odometry, odom_frame_, base_frame_);
   joint_pub_ = loop_.advertise<sensor_msgs::JointState>("joint_states");
   const auto& p = dynamics_.parameters();
   ROS_INFO_STREAM("Norma: R = " << p.R << " m, L = " << p.L << " m, L0 = " << p.L0
@@ -55,7 +58,7 @@ NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
                                 << p.m_shell << ", shaft " << p.m_shaft << ", pendulum "
                                 << p.m_pendulum << ", slider " << p.m_slider << " kg; step "
                                 << loop_.step() << " s");
-  loop_.start(*this, state_pub_);
+  loop_.start(*this, odometry_->odom());
 }
 
 void NormaPlantRos::read(const sensor_msgs::JointState& actuators) {
@@ -70,26 +73,31 @@ void NormaPlantRos::advance(double elapsed, bool actuators_fresh) {
                                         loop_.step());
 }
 
+// The controller's feedback, odom and joint_states, at every step: the paper's inner loop needs
+// the 1 kHz (docs/conventions.md).
 void NormaPlantRos::publishEveryStep(const ros::Time& now, bool actuators_fresh) {
+  const norma::PlanarRates rates = dynamics_.planarRates(state_.q, state_.qd, state_.psi);
+  const BodyMotion motion = bodyMotion(centre(), yawRotation(state_.psi), {rates.x_dot, rates.y_dot, 0.0},
+                                       {0.0, 0.0, rates.psi_dot});
+  odometry_->publish(now, motion);
+  if (odometry_->imuDue(now)) odometry_->publishImu(now, motion);
+  joint_pub_.publish(conversions::normaJointState(state_, now));
   state_pub_.publish(conversions::toNormaStateMsg(
       state_, norma::drivingEfforts(measured_, actuators_fresh),
       dynamics_.totalEnergy(state_.q, state_.qd), now));
 }
 
 void NormaPlantRos::publishPeriodic(const ros::Time& now, bool /*actuators_fresh*/) {
-  const Eigen::Vector3d centre(state_.x, state_.y, dynamics_.parameters().R);
-  const Eigen::Quaterniond heading(Eigen::AngleAxisd(state_.psi, Eigen::Vector3d::UnitZ()));
-  const norma::PlanarRates rates = dynamics_.planarRates(state_.q, state_.qd, state_.psi);
-  odom_pub_.publish(conversions::toOdometry(centre, heading, {rates.x_dot, rates.y_dot, 0.0},
-                                            {0.0, 0.0, rates.psi_dot}, kWorldFrame, base_frame_,
-                                            now));
-  loop_.tf().sendTransform(conversions::toTransform(centre, heading, kWorldFrame, base_frame_, now));
-  joint_pub_.publish(conversions::normaJointState(state_, now));
+  loop_.tf().sendTransform(
+      conversions::toTransform(centre(), yawRotation(state_.psi), odom_frame_, base_frame_, now));
+}
+
+Eigen::Vector3d NormaPlantRos::centre() const {
+  return {state_.x, state_.y, dynamics_.parameters().R};
 }
 
 std::optional<PlantModel::Pose> NormaPlantRos::trailPose() const {
-  return Pose{{state_.x, state_.y, 0.0},
-              Eigen::Quaterniond(Eigen::AngleAxisd(state_.psi, Eigen::Vector3d::UnitZ()))};
+  return Pose{{state_.x, state_.y, 0.0}, yawRotation(state_.psi)};
 }
 
 void NormaPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

@@ -16,8 +16,15 @@ PlantLoop::PlantLoop(ros::NodeHandle nh, ros::NodeHandle pnh, const Defaults& de
       actuator_input_(nh.resolveName("actuators/state"), parameters_.state_timeout),
       tf_(step_publications_),
       updater_(nh, pnh, pnh.getNamespace()) {
+  if (defaults.root_frame.empty() || defaults.root_frame == kMapFrame)
+    throw std::invalid_argument("a plant's root frame must be a frame of its own under " + kMapFrame +
+                                ", got '" + defaults.root_frame + "'");
+  static_tf_.sendTransform(conversions::toTransform(
+      {parameters_.origin_x, parameters_.origin_y, 0.0},
+      Eigen::Quaterniond(Eigen::AngleAxisd(parameters_.origin_yaw, Eigen::Vector3d::UnitZ())),
+      kMapFrame, defaults.root_frame, ros::Time::now()));
   if (parameters_.trail_period > 0.0)
-    trail_.emplace(nh, "trail", kWorldFrame, parameters_.trail_period, defaults.max_trail_points);
+    trail_.emplace(nh, "trail", defaults.root_frame, parameters_.trail_period, defaults.max_trail_points);
 }
 
 void PlantLoop::start(PlantModel& model, const LoopPublisher& state) {

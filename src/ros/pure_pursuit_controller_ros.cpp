@@ -4,6 +4,7 @@
 #include "spherical_robots/ros/timer_jump_guard.hpp"
 
 #include <geometry_msgs/PointStamped.h>
+#include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
 #include <sensor_msgs/JointState.h>
 
@@ -16,7 +17,6 @@
 
 #include "spherical_robots/TrackingError.h"
 #include "spherical_robots/config/terrain_config.hpp"
-#include "spherical_robots/core/validation.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 
 namespace spherical_robots {
@@ -46,6 +46,7 @@ PurePursuitControllerParameters loadPurePursuitControllerParameters(
   p.path = node.text("path").value_or(p.path);
   p.untimed_speed = config::positiveNumber(node, "untimed_speed", p.untimed_speed);
   p.path_tf_timeout = config::positiveNumber(node, "path_tf_timeout", p.path_tf_timeout);
+  p.odom_frame = node.text("odom_frame").value_or(p.odom_frame);
   p.rate = config::positiveNumber(node, "rate", p.rate);
   p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);
   p.max_position = config::positiveNumber(node, "max_position", p.max_position);
@@ -60,17 +61,27 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
     : parameters_(loadPurePursuitControllerParameters(RosParameterSource(pnh))),
       radius_(radiusFromRobotDescription(nh)),
       clock_(parameters_.max_clock_step),
-      input_(nh.resolveName(parameters_.mode == Mode::Tracking ? "terrain_state" : "cmd_vel"),
+      input_(nh.resolveName(parameters_.mode == Mode::Tracking ? "odom" : "cmd_vel"),
              parameters_.input_timeout),
+      tilt_input_(nh.resolveName("joint_states"), parameters_.input_timeout),
       updater_(nh, pnh, pnh.getNamespace()) {
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
   controller_ = config::makePursuitController(parameters_.law, parameters_.robot_type,
                                               terrain_config, radius_);
 
+  surface_ = config::makeSurface(terrain_config.surface);
+  body_frame_ = std::make_unique<terrain::BodyFrame>(*surface_, radius_);
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
-  state_sub_ = nh.subscribe("terrain_state", kLoopQueueSize, &PurePursuitControllerRos::onTerrainState, this);
+  // Feedback through standard messages only: odometry (any source's, e.g. robot_localization's)
+  // and, for RS, the tilt joint; the terrain model gives the contact geometry.
+  std::vector<ros::Subscriber> inputs{
+      nh.subscribe("odom", kLoopQueueSize, &PurePursuitControllerRos::onOdometry, this)};
+  odom_sub_ = inputs.front();
+  if (parameters_.robot_type == terrain::RobotType::RollingAndSteering) {
+    joint_sub_ = nh.subscribe("joint_states", kLoopQueueSize, &PurePursuitControllerRos::onJointStates, this);
+    inputs.push_back(joint_sub_);
+  }
   if (parameters_.mode == Mode::Tracking) {
-    surface_ = config::makeSurface(terrain_config.surface);
     error_pub_ = step_publications_.advertise<spherical_robots::TrackingError>(nh, "tracking_error");
     target_pub_ = step_publications_.advertise<geometry_msgs::PointStamped>(nh, "target");
     desired_path_pub_ = nh.advertise<nav_msgs::Path>("desired_path", 1, true);
@@ -113,7 +124,7 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
   const double period = 1.0 / parameters_.rate;
   if (isLockstepParticipant(nh, pnh)) {
     lockstep_ = std::make_unique<LockstepParticipant>(
-        nh, pnh, std::vector<ros::Subscriber>{state_sub_}, [this, period](const ros::Time& now) {
+        nh, pnh, inputs, [this, period](const ros::Time& now) {
           return LockstepParticipant::Done{control(now), now + ros::Duration(period)};
         });
     // Time starts with a path to follow (~path topic: once one has arrived), so that a path sent
@@ -128,31 +139,46 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
 
 ros::Time PurePursuitControllerRos::now() const { return workingTime(lockstep_.get()); }
 
-void PurePursuitControllerRos::onTerrainState(const spherical_robots::TerrainState& msg) {
-  if (msg.robot_type != terrain::toString(parameters_.robot_type)) {
-    input_.reject("state of a " + msg.robot_type + " robot, this controller drives a " +
-                  terrain::toString(parameters_.robot_type));
-    return;
-  }
+void PurePursuitControllerRos::onOdometry(const nav_msgs::Odometry& msg) {
   const bool primary = parameters_.mode == Mode::Tracking;
-  // In lock-step the state is taken in at its own stamp, the step it belongs to, whatever the
-  // order the transport delivered it in.
-  const ros::Time now = lockstep_ ? msg.header.stamp : ros::Time::now();
   try {
     // Everything checked before anything changes: a rejected state leaves the last good one.
-    const std::string stamp_problem = stampProblem(msg.header.stamp, this->now(), parameters_.max_stamp_skew);
-    if (!stamp_problem.empty()) throw std::invalid_argument("terrain_state " + stamp_problem);
-    const terrain::ContactGeometry geometry =
-        conversions::contactGeometryFromMsg(msg, parameters_.max_position);
-    requireMagnitudeAtMost(msg.phi, M_PI, "terrain_state phi [rad]");
-    geometry_ = geometry;
-    tilt_ = msg.phi;
-    if (primary) input_.accept(now);
-  } catch (const std::invalid_argument& e) {
+    acceptStamp(msg.header.stamp, "odom");
+    if (msg.header.frame_id != parameters_.odom_frame)
+      throw std::invalid_argument("odom in frame '" + msg.header.frame_id + "', the terrain and the path are in '" +
+                                  parameters_.odom_frame + "' (~odom_frame)");
+    const terrain::BodyPose body = conversions::bodyPoseFromOdometry(msg, parameters_.max_position);
+    geometry_ = terrain::contactGeometry(*surface_, radius_, body_frame_->state(body, tilt_));
+    if (primary) input_.accept(inputTime(msg.header.stamp));
+  } catch (const std::exception& e) {
+    // std::invalid_argument for a malformed message, terrain::OffMapError for a centre whose
+    // contact point is off a height map: either way the last good state stays.
     if (primary) input_.reject(e.what());
-    ROS_WARN_STREAM_THROTTLE(1.0, "Ignoring terrain_state: " << e.what());
+    ROS_WARN_STREAM_THROTTLE(1.0, "Ignoring odom: " << e.what());
   }
-  if (lockstep_) lockstep_->received(state_sub_.getTopic(), msg.header.stamp);
+  if (lockstep_) lockstep_->received(odom_sub_.getTopic(), msg.header.stamp);
+}
+
+void PurePursuitControllerRos::onJointStates(const sensor_msgs::JointState& msg) {
+  try {
+    acceptStamp(msg.header.stamp, "joint_states");
+    tilt_ = conversions::tiltFromJointState(msg);
+    tilt_input_.accept(inputTime(msg.header.stamp));
+  } catch (const std::invalid_argument& e) {
+    tilt_input_.reject(e.what());
+  }
+  if (lockstep_) lockstep_->received(joint_sub_.getTopic(), msg.header.stamp);
+}
+
+void PurePursuitControllerRos::acceptStamp(const ros::Time& stamp, const std::string& topic) const {
+  const std::string problem = stampProblem(stamp, now(), parameters_.max_stamp_skew);
+  if (!problem.empty()) throw std::invalid_argument(topic + " " + problem);
+}
+
+ros::Time PurePursuitControllerRos::inputTime(const ros::Time& stamp) const {
+  // In lock-step a state is taken in at its own stamp, the step it belongs to, whatever the
+  // order the transport delivered it in.
+  return lockstep_ ? stamp : ros::Time::now();
 }
 
 void PurePursuitControllerRos::onPath(const ros::MessageEvent<const nav_msgs::Path>& event) {
@@ -174,29 +200,29 @@ void PurePursuitControllerRos::resolvePendingPath() {
   try {
     if (frame.empty()) {
       throw std::invalid_argument("header.frame_id is empty; the controller's frame is '" +
-                                  kWorldFrame + "'");
+                                  parameters_.odom_frame + "' (~odom_frame)");
     }
-    Eigen::Isometry3d to_world = Eigen::Isometry3d::Identity();
-    if (frame != kWorldFrame) {
+    Eigen::Isometry3d to_odom = Eigen::Isometry3d::Identity();
+    if (frame != parameters_.odom_frame) {
       std::string tf_error;
-      if (!tf_buffer_.canTransform(kWorldFrame, frame, msg.header.stamp, &tf_error)) {
+      if (!tf_buffer_.canTransform(parameters_.odom_frame, frame, msg.header.stamp, &tf_error)) {
         const double waited = (ros::WallTime::now() - pending_path_->arrived).toSec();
         if (waited < parameters_.path_tf_timeout) {
           path_tf_timer_.start();
           return;
         }
         std::ostringstream problem;
-        problem << "no transform from frame '" << frame << "' to '" << kWorldFrame << "' at "
+        problem << "no transform from frame '" << frame << "' to '" << parameters_.odom_frame << "' at "
                 << msg.header.stamp.toSec() << " s after " << waited << " s (path_tf_timeout "
                 << parameters_.path_tf_timeout << " s): " << tf_error;
         throw std::invalid_argument(problem.str());
       }
-      to_world = conversions::fromTransform(
-          tf_buffer_.lookupTransform(kWorldFrame, frame, msg.header.stamp).transform,
+      to_odom = conversions::fromTransform(
+          tf_buffer_.lookupTransform(parameters_.odom_frame, frame, msg.header.stamp).transform,
           "transform from '" + frame + "'");
     }
     auto path = std::make_unique<terrain::SampledPath>(terrain::SampledPath::fromStamped(
-        conversions::stampedPointsFromPath(msg, to_world, parameters_.max_position),
+        conversions::stampedPointsFromPath(msg, to_odom, parameters_.max_position),
         parameters_.untimed_speed));
     follow(std::move(path), msg.poses.front().header.stamp, pending_path_->received,
            path_sub_.getTopic() + " from " + pending_path_->publisher + " in frame '" + frame + "'");
@@ -243,7 +269,7 @@ void PurePursuitControllerRos::refusePath(const std::string& reason) {
 
 void PurePursuitControllerRos::publishDesiredPath(int samples) {
   desired_path_pub_.publish(
-      conversions::sampledPath(*path_, *surface_, samples, kWorldFrame, now()));
+      conversions::sampledPath(*path_, *surface_, samples, parameters_.odom_frame, now()));
 }
 
 void PurePursuitControllerRos::onCmdVel(const geometry_msgs::Twist& msg) {
@@ -299,8 +325,8 @@ terrain::DriveRates PurePursuitControllerRos::track(const ros::Time& now) {
   const terrain::TrackingCommand tracked =
       tracker_->command(nanosecondsOf(now), *geometry_, tilt_);
   error_ = tracked.error;
-  error_pub_.publish(conversions::toTrackingErrorMsg(error_, tracked.desired, kWorldFrame, now));
-  target_pub_.publish(conversions::toPointStamped(tracked.desired.position, kWorldFrame, now));
+  error_pub_.publish(conversions::toTrackingErrorMsg(error_, tracked.desired, parameters_.odom_frame, now));
+  target_pub_.publish(conversions::toPointStamped(tracked.desired.position, parameters_.odom_frame, now));
   return tracked.rates;
 }
 
@@ -336,6 +362,7 @@ void PurePursuitControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrap
   status.add("turn rate set-point [rad/s]", command_.turn_rate);
   status.add("command failures", failures_);
   input_.report(status, now());
+  if (parameters_.robot_type == terrain::RobotType::RollingAndSteering) tilt_input_.report(status, now());
 }
 
 void PurePursuitControllerRos::reportPath(diagnostic_updater::DiagnosticStatusWrapper& status) {

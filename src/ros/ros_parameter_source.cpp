@@ -96,7 +96,7 @@ std::string robotDescription(const ros::NodeHandle& nh) {
 
 double radiusFromRobotDescription(const ros::NodeHandle& nh) {
   return fromRobotDescription(nh, [](const std::string& urdf) {
-    return config::sphereRadiusFromUrdf(urdf);
+    return config::sphereRadiusFromUrdf(urdf, "shell");
   });
 }
 

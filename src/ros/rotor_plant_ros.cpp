@@ -1,6 +1,5 @@
 #include "spherical_robots/ros/rotor_plant_ros.hpp"
 
-#include <nav_msgs/Odometry.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -17,8 +16,9 @@ namespace {
 
 const std::vector<std::string> kRotors = {"rotor_1", "rotor_2"};
 
-PlantLoop::Defaults loopDefaults() {
+PlantLoop::Defaults loopDefaults(const std::string& odom_frame) {
   PlantLoop::Defaults defaults;
+  defaults.root_frame = odom_frame;
   defaults.task = "rotor sphere plant";
   defaults.hardware_id = "rotor sphere";
   defaults.parameters.step = 0.001;
@@ -37,18 +37,20 @@ RotorPlantParameters loadRotorPlantParameters(const config::ParameterSource& sta
   p.sphere_radius = config::positiveNumber(node, "sphere_radius", p.sphere_radius);
   p.frame_prefix = node.text("frame_prefix").value_or("");
   p.max_actuator_rate = config::positiveNumber(node, "max_actuator_rate", p.max_actuator_rate);
+  p.odometry = config::loadOdometryParameters(node);
   return p;
 }
 
 RotorPlantRos::RotorPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : parameters_(loadRotorPlantParameters(RosParameterSource(nh), RosParameterSource(pnh))),
+      odom_frame_(parameters_.frame_prefix + "odom"),
       base_frame_(parameters_.frame_prefix + "base_link"),
-      loop_(nh, pnh, loopDefaults()) {
-  odom_pub_ = loop_.advertise<nav_msgs::Odometry>("odom");
+      loop_(nh, pnh, loopDefaults(odom_frame_)) {
+  odometry_.emplace(loop_, parameters_.odometry, odom_frame_, base_frame_);
   joint_pub_ = loop_.advertise<sensor_msgs::JointState>("joint_states");
   ROS_INFO_STREAM("rotor sphere: R = " << parameters_.sphere_radius << " m, k = " << parameters_.inertia_ratio << ", J_zz/J_r = "
                                        << parameters_.rotor_inertia_scale << "; step " << loop_.step() << " s");
-  loop_.start(*this, odom_pub_);
+  loop_.start(*this, odometry_->odom());
 }
 
 void RotorPlantRos::read(const sensor_msgs::JointState& actuators) {
@@ -79,7 +81,9 @@ void RotorPlantRos::advance(double elapsed, bool actuators_fresh) {
 
 void RotorPlantRos::publishPeriodic(const ros::Time& now, bool actuators_fresh) {
   const Eigen::Vector3d centre(parameters_.sphere_radius * state_.u_a, parameters_.sphere_radius * state_.v_a, parameters_.sphere_radius);
-  const Eigen::Quaterniond attitude(rotor::orientation(state_.u_o, state_.v_o, state_.psi));
+  // Normalised once, as rotor::SampledRotorLoop measures it.
+  const Eigen::Quaterniond attitude =
+      Eigen::Quaterniond(rotor::orientation(state_.u_o, state_.v_o, state_.psi)).normalized();
   const rotor::RotorSpeeds speeds = actuators_fresh ? speeds_ : rotor::RotorSpeeds{};
   Eigen::Vector3d omega = Eigen::Vector3d::Zero();
   rotor::ContactRates rates;
@@ -89,10 +93,13 @@ void RotorPlantRos::publishPeriodic(const ros::Time& now, bool actuators_fresh) 
   } catch (const std::invalid_argument&) {
     // Counted by the loop's failed step; the pose is still worth publishing.
   }
-  odom_pub_.publish(conversions::toOdometry(centre, attitude,
-                                            {parameters_.sphere_radius * rates.u_a, parameters_.sphere_radius * rates.v_a, 0.0}, omega,
-                                            kWorldFrame, base_frame_, now));
-  loop_.tf().sendTransform(conversions::toTransform(centre, attitude, kWorldFrame, base_frame_, now));
+  const BodyMotion motion = bodyMotion(
+      centre, attitude, {parameters_.sphere_radius * rates.u_a, parameters_.sphere_radius * rates.v_a, 0.0},
+      omega);
+  odometry_->publish(now, motion);
+  // The IMU at the odometry's rate at most (the plant computes its motion only then).
+  if (odometry_->imuDue(now)) odometry_->publishImu(now, motion);
+  loop_.tf().sendTransform(conversions::toTransform(centre, attitude, odom_frame_, base_frame_, now));
   joint_pub_.publish(conversions::jointState(kRotors, {positions_[0], positions_[1]},
                                              {speeds.phi1, speeds.phi2}, {}, now));
 }

@@ -1,6 +1,7 @@
 #include "spherical_robots/ros/terrain_conversions.hpp"
 #include "spherical_robots/core/validation.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <sstream>
@@ -8,19 +9,6 @@
 #include <utility>
 
 namespace spherical_robots::conversions {
-namespace {
-
-constexpr double kUnitTolerance = 1e-6;
-
-void requireUnit(const Eigen::Vector3d& v, const std::string& field) {
-  if (std::abs(v.norm() - 1.0) > kUnitTolerance) {
-    std::ostringstream what;
-    what << field << " has norm " << v.norm() << ", expected a unit vector";
-    throw std::invalid_argument(what.str());
-  }
-}
-
-}  // namespace
 
 terrain::DriveRates ratesFromJointState(terrain::RobotType type, const sensor_msgs::JointState& msg,
                                         double max_rate) {
@@ -43,10 +31,10 @@ spherical_robots::TerrainState toTerrainStateMsg(terrain::RobotType type, terrai
                                                  const terrain::TerrainState& state,
                                                  const terrain::ContactGeometry& geometry,
                                                  const terrain::DriveRates& realised,
-                                                 const ros::Time& stamp) {
+                                                 const std::string& frame, const ros::Time& stamp) {
   spherical_robots::TerrainState msg;
   msg.header.stamp = stamp;
-  msg.header.frame_id = kWorldFrame;
+  msg.header.frame_id = frame;
   msg.robot_type = terrain::toString(type);
   msg.contact_model = terrain::toString(model);
   msg.contact_point = toPoint(geometry.contact_point);
@@ -61,25 +49,24 @@ spherical_robots::TerrainState toTerrainStateMsg(terrain::RobotType type, terrai
   return msg;
 }
 
-terrain::ContactGeometry contactGeometryFromMsg(const spherical_robots::TerrainState& msg,
-                                                double max_position) {
-  const Eigen::Vector3d normal = fromVector3(msg.normal, "normal");
-  const Eigen::Vector3d heading = fromVector3(msg.heading, "heading");
-  requireUnit(normal, "normal");
-  requireUnit(heading, "heading");
-  if (std::abs(normal.dot(heading)) > kUnitTolerance) {
-    std::ostringstream what;
-    what << "heading is not perpendicular to normal (h.n = " << normal.dot(heading) << ")";
-    throw std::invalid_argument(what.str());
-  }
-  if (!(normal.z() > 0.0)) {
-    std::ostringstream what;
-    what << "normal.z = " << normal.z() << " does not point up";
-    throw std::invalid_argument(what.str());
-  }
-  return terrain::contactGeometryFromAxes(
-      boundedPoint(msg.contact_point, "contact_point", max_position),
-      boundedPoint(msg.centre, "centre", max_position), normal, heading);
+terrain::BodyPose bodyPoseFromOdometry(const nav_msgs::Odometry& msg, double max_position) {
+  return {boundedPoint(msg.pose.pose.position, "pose.position", max_position),
+          checkedQuaternion(msg.pose.pose.orientation, "pose.orientation")};
+}
+
+sensor_msgs::JointState tiltJointState(double phi, double phi_rate, const ros::Time& stamp) {
+  return jointState({kTiltJoint}, {phi}, {phi_rate}, {}, stamp);
+}
+
+double tiltFromJointState(const sensor_msgs::JointState& msg) {
+  const auto found = std::find(msg.name.begin(), msg.name.end(), kTiltJoint);
+  if (found == msg.name.end()) throw std::invalid_argument("joint_states lacks joint '" + kTiltJoint + "'");
+  const std::size_t index = found - msg.name.begin();
+  if (index >= msg.position.size())
+    throw std::invalid_argument("joint_states has no position for joint '" + kTiltJoint + "'");
+  const double phi = msg.position[index];
+  requireMagnitudeAtMost(phi, M_PI / 2.0, "position of joint '" + kTiltJoint + "' [rad]");
+  return phi;
 }
 
 spherical_robots::TrackingError toTrackingErrorMsg(const terrain::TrackingError& error,

@@ -1,6 +1,6 @@
 #include "spherical_robots/ros/terrain_plant_ros.hpp"
 
-#include <nav_msgs/Odometry.h>
+#include <sensor_msgs/JointState.h>
 #include <visualization_msgs/Marker.h>
 
 #include <cmath>
@@ -16,8 +16,9 @@
 namespace spherical_robots {
 namespace {
 
-PlantLoop::Defaults loopDefaults(terrain::RobotType type) {
+PlantLoop::Defaults loopDefaults(terrain::RobotType type, const std::string& odom_frame) {
   PlantLoop::Defaults defaults;
+  defaults.root_frame = odom_frame;
   defaults.task = "terrain plant";
   defaults.hardware_id = terrain::toString(type) + " sphere";
   defaults.parameters.step = 0.01;
@@ -41,14 +42,17 @@ TerrainPlantParameters loadTerrainPlantParameters(const config::ParameterSource&
   p.initial_psi = config::finiteNumber(node, "initial_psi", p.initial_psi);
   p.marker_half_extent = config::positiveNumber(node, "marker_half_extent", p.marker_half_extent);
   p.marker_resolution = config::positiveNumber(node, "marker_resolution", p.marker_resolution);
+  p.odometry = config::loadOdometryParameters(node);
   return p;
 }
 
 TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : parameters_(loadTerrainPlantParameters(RosParameterSource(pnh))),
+      odom_frame_(parameters_.frame_prefix + "odom"),
       base_frame_(parameters_.frame_prefix + "base_link"),
+      shell_frame_(parameters_.frame_prefix + "shell"),
       heading_frame_(parameters_.frame_prefix + "heading"),
-      loop_(nh, pnh, loopDefaults(parameters_.robot_type)) {
+      loop_(nh, pnh, loopDefaults(parameters_.robot_type, odom_frame_)) {
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
   const double radius = radiusFromRobotDescription(nh);
   const terrain::ContactModel model = parameters_.contact_model;
@@ -57,24 +61,27 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   surface_ = config::makeSurface(terrain_config.surface, loading);
   kinematics_ = std::make_unique<terrain::TerrainKinematics>(
       *surface_, parameters_.robot_type, radius, model, terrain_config.tilt_limit);
+  body_frame_ = std::make_unique<terrain::BodyFrame>(*surface_, radius);
   state_.x = parameters_.initial_x;
   state_.y = parameters_.initial_y;
   state_.psi = parameters_.initial_psi;
   orientation_ = Eigen::Quaterniond(kinematics_->geometry(state_).heading_frame);
 
-  odom_pub_ = loop_.advertise<nav_msgs::Odometry>("odom");
+  odometry_.emplace(loop_, parameters_.odometry, odom_frame_, base_frame_);
+  if (parameters_.robot_type == terrain::RobotType::RollingAndSteering)
+    joint_pub_ = loop_.advertise<sensor_msgs::JointState>("joint_states");
   state_pub_ = loop_.advertise<spherical_robots::TerrainState>("terrain_state");
   marker_pub_ = nh.advertise<visualization_msgs::Marker>("terrain_marker", 1, true);
   // A height map is drawn where it has heights; a surface defined everywhere, on a square.
   const Eigen::Vector2d corner = Eigen::Vector2d::Constant(parameters_.marker_half_extent);
   marker_pub_.publish(conversions::surfaceMesh(
       *surface_, surface_->domain().value_or(Eigen::AlignedBox2d(-corner, corner)),
-      parameters_.marker_resolution, kWorldFrame, ros::Time::now()));
+      parameters_.marker_resolution, odom_frame_, ros::Time::now()));
   ROS_INFO_STREAM(terrain::toString(parameters_.robot_type) << " sphere, R = " << radius << " m, "
                                            << terrain::toString(model) << " contact model, on "
-                                           << surface_->describe() << "; frames " << base_frame_
-                                           << ", " << heading_frame_);
-  loop_.start(*this, state_pub_);
+                                           << surface_->describe() << "; frames " << odom_frame_ << " -> "
+                                           << base_frame_ << " -> " << shell_frame_ << ", " << heading_frame_);
+  loop_.start(*this, odometry_->odom());
 }
 
 void TerrainPlantRos::read(const sensor_msgs::JointState& actuators) {
@@ -97,19 +104,39 @@ void TerrainPlantRos::advance(double elapsed, bool actuators_fresh) {
   orientation_ = next.orientation;
 }
 
+BodyMotion TerrainPlantRos::exactMotion(const terrain::ContactGeometry& geometry,
+                                       const terrain::DriveRates& realised) const {
+  const terrain::BodyPose body = terrain::BodyFrame::pose(geometry);
+  const terrain::BodyTwist twist =
+      body_frame_->twist(geometry, kinematics_->realisedStateRate(state_, geometry, realised));
+  return {body.centre, body.orientation, twist.linear, twist.angular};
+}
+
+void TerrainPlantRos::publishEveryStep(const ros::Time& now, bool actuators_fresh) {
+  if (!odometry_->imuDue(now)) return;
+  odometry_->publishImu(now, exactMotion(kinematics_->geometry(state_),
+                                         kinematics_->realisedRates(state_, rates(actuators_fresh))));
+}
+
 void TerrainPlantRos::publishPeriodic(const ros::Time& now, bool actuators_fresh) {
-  const terrain::DriveRates drive = rates(actuators_fresh);
   const terrain::ContactGeometry geometry = kinematics_->geometry(state_);
-  const Eigen::Quaterniond heading(geometry.heading_frame);
-  odom_pub_.publish(conversions::toOdometry(geometry.centre, orientation_,
-                                            kinematics_->centreVelocity(state_, drive),
-                                            kinematics_->shellAngularVelocity(state_, drive),
-                                            kWorldFrame, base_frame_, now));
+  const terrain::DriveRates realised = kinematics_->realisedRates(state_, rates(actuators_fresh));
+  const BodyMotion motion = exactMotion(geometry, realised);
+  odometry_->publish(now, motion);
+  // tf is the simulated truth, also with noisy odometry. The shell and the heading frame (at P0)
+  // under the body, which does not roll.
+  const Eigen::Quaterniond body_from_odom = motion.orientation.conjugate();
   loop_.tf().sendTransform(
-      {conversions::toTransform(geometry.centre, orientation_, kWorldFrame, base_frame_, now),
-       conversions::toTransform(geometry.contact_point, heading, kWorldFrame, heading_frame_, now)});
-  state_pub_.publish(conversions::toTerrainStateMsg(parameters_.robot_type, kinematics_->model(), state_, geometry,
-                                                    kinematics_->realisedRates(state_, drive), now));
+      {conversions::toTransform(motion.position, motion.orientation, odom_frame_, base_frame_, now),
+       conversions::toTransform(Eigen::Vector3d::Zero(), body_from_odom * orientation_, base_frame_,
+                                shell_frame_, now),
+       conversions::toTransform(body_from_odom * (geometry.contact_point - geometry.centre),
+                                body_from_odom * Eigen::Quaterniond(geometry.heading_frame),
+                                base_frame_, heading_frame_, now)});
+  if (parameters_.robot_type == terrain::RobotType::RollingAndSteering)
+    joint_pub_.publish(conversions::tiltJointState(state_.phi, realised.lateral_rate, now));
+  state_pub_.publish(conversions::toTerrainStateMsg(parameters_.robot_type, kinematics_->model(), state_,
+                                                    geometry, realised, odom_frame_, now));
 }
 
 std::optional<PlantModel::Pose> TerrainPlantRos::trailPose() const {

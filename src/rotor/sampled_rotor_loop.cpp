@@ -72,7 +72,7 @@ void SampledRotorLoop::step() {
   }
   if (periodDue(last_publish_, now_, 1.0 / sampling_.publish_rate)) {
     last_publish_ = now_;
-    // odom carries the attitude normalised (conversions::toQuaternion); the planner normalises
+    // odom carries the attitude normalised (rotor_plant); the planner normalises
     // what it reads again (conversions::fromQuaternion).
     const Eigen::Quaterniond sent =
         Eigen::Quaterniond(orientation(state_.u_o, state_.v_o, state_.psi)).normalized();

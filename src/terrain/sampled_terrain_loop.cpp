@@ -50,6 +50,7 @@ SampledTerrainLoop::SampledTerrainLoop(const TerrainKinematics& kinematics,
       control_period_(durationNanoseconds(1.0 / sampling.control_rate)),
       hardware_period_(durationNanoseconds(1.0 / sampling.hardware_rate)),
       timeline_(0.0, kDefaultMaxClockStep),
+      body_frame_(kinematics.surface(), kinematics.radius()),
       state_(initial),
       orientation_(kinematics.geometry(initial).heading_frame) {
   if (law.type() != kinematics.type()) {
@@ -74,10 +75,12 @@ void SampledTerrainLoop::step() {
   }
   if (periodDue(last_publish_, now_, 1.0 / sampling_.publish_rate)) {
     last_publish_ = now_;
-    const ContactGeometry sent = kinematics_.geometry(state_);
-    received_ = contactGeometryFromAxes(sent.contact_point, sent.centre, sent.heading_frame.col(2),
-                                        sent.heading_frame.col(0));
+    // The controller sees odom (the body's pose) and, for RS, joint_states (the tilt), and
+    // recovers the contact geometry from them through the terrain model.
     received_tilt_ = state_.phi;
+    received_ = contactGeometry(kinematics_.surface(), kinematics_.radius(),
+                                body_frame_.state(BodyFrame::pose(kinematics_.geometry(state_)),
+                                                  received_tilt_));
     received_at_ = now_;
   }
   // 2. The controller (PurePursuitControllerRos::control), which the sequencer asks when it is due.

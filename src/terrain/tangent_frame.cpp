@@ -1,5 +1,6 @@
 #include "spherical_robots/terrain/tangent_frame.hpp"
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <stdexcept>
 
@@ -41,6 +42,10 @@ Eigen::Matrix3d tangentFrame(const Eigen::Vector2d& gradient) {
            -gxy, 1.0 - d * gy * gy, -c * gy,
            c * gx, c * gy, c;
   return frame;
+}
+
+double tangentFrameSpin(const Eigen::Vector3d& normal, const Eigen::Vector3d& normal_rate) {
+  return normal_rate.cross(normal).z() / (1.0 + normal.z());
 }
 
 // Eq 26 with R_LT = Rz(psi): psi is right-handed about n (the printed eq 25 is Rz(-psi)).

@@ -52,13 +52,34 @@ TerrainKinematics::TerrainKinematics(const Surface& surface, RobotType type, dou
   }
 }
 
-ContactGeometry TerrainKinematics::geometry(const TerrainState& state) const {
+ContactGeometry contactGeometry(const Surface& surface, double radius, const TerrainState& state) {
   requireFinite(state);
-  const SurfacePoint point = surface_.evaluate(state.x, state.y);
+  const SurfacePoint point = surface.evaluate(state.x, state.y);
   ContactGeometry geometry{Eigen::Vector3d(state.x, state.y, point.height), Eigen::Vector3d(),
                            headingFrame(point.gradient, state.psi), point.gradient, point.hessian};
-  geometry.centre = geometry.contact_point + radius_ * geometry.heading_frame.col(2);  // eq 51
+  geometry.centre = geometry.contact_point + radius * geometry.heading_frame.col(2);  // eq 51
   return geometry;
+}
+
+// With N = (-f_x, -f_y, 1): dn/dx_j = (I - n n^T) dN/dx_j / |N|.
+Eigen::Matrix<double, 3, 2> normalJacobian(const ContactGeometry& geometry) {
+  const Eigen::Vector3d& n = geometry.heading_frame.col(2);
+  const Eigen::Matrix2d& hessian = geometry.hessian;
+  const double normal_length = std::sqrt(1.0 + geometry.gradient.squaredNorm());
+  const Eigen::Matrix3d projector = Eigen::Matrix3d::Identity() - n * n.transpose();
+  Eigen::Matrix<double, 3, 2> unnormalised;
+  unnormalised << -hessian(0, 0), -hessian(0, 1), -hessian(1, 0), -hessian(1, 1), 0.0, 0.0;
+  return projector * unnormalised / normal_length;
+}
+
+Eigen::Matrix<double, 3, 2> centreJacobian(const ContactGeometry& geometry, double radius) {
+  Eigen::Matrix<double, 3, 2> contact_jacobian;
+  contact_jacobian << 1.0, 0.0, 0.0, 1.0, geometry.gradient.x(), geometry.gradient.y();
+  return contact_jacobian + radius * normalJacobian(geometry);
+}
+
+ContactGeometry TerrainKinematics::geometry(const TerrainState& state) const {
+  return contactGeometry(surface_, radius_, state);
 }
 
 DriveRates TerrainKinematics::realisedRates(const TerrainState& state,
@@ -106,7 +127,7 @@ TerrainStateRate TerrainKinematics::realisedStateRate(const TerrainState& state,
   }
   // Rolling: velocity is the centre's; solve [dC/dx dC/dy] (x', y') = velocity, which lies in
   // the tangent plane like both columns.
-  const Eigen::Matrix<double, 3, 2> jacobian = centreJacobian(geometry);
+  const Eigen::Matrix<double, 3, 2> jacobian = centreJacobian(geometry, radius_);
   const Eigen::Matrix2d gram = jacobian.transpose() * jacobian;
   const double determinant = gram.determinant();
   if (!(determinant > 1e-12 * gram.trace() * gram.trace())) {
@@ -120,36 +141,15 @@ TerrainStateRate TerrainKinematics::realisedStateRate(const TerrainState& state,
   rate.y_dot = contact_rate.y();
   // The minimal-rotation tangent frame turns about n at z . (n' x n) / (1 + n_z) as n changes;
   // psi, measured from it, must turn the other way for the heading to turn at turn_rate.
-  const Eigen::Vector3d& n = frame.col(2);
-  const Eigen::Vector3d normal_rate = normalJacobian(geometry) * contact_rate;
-  rate.psi_dot -= normal_rate.cross(n).z() / (1.0 + n.z());
+  rate.psi_dot -= tangentFrameSpin(frame.col(2), normalJacobian(geometry) * contact_rate);
   return rate;
-}
-
-// With N = (-f_x, -f_y, 1): dn/dx_j = (I - n n^T) dN/dx_j / |N|.
-Eigen::Matrix<double, 3, 2> TerrainKinematics::normalJacobian(
-    const ContactGeometry& geometry) const {
-  const Eigen::Vector3d& n = geometry.heading_frame.col(2);
-  const Eigen::Matrix2d& hessian = geometry.hessian;
-  const double normal_length = std::sqrt(1.0 + geometry.gradient.squaredNorm());
-  const Eigen::Matrix3d projector = Eigen::Matrix3d::Identity() - n * n.transpose();
-  Eigen::Matrix<double, 3, 2> unnormalised;
-  unnormalised << -hessian(0, 0), -hessian(0, 1), -hessian(1, 0), -hessian(1, 1), 0.0, 0.0;
-  return projector * unnormalised / normal_length;
-}
-
-Eigen::Matrix<double, 3, 2> TerrainKinematics::centreJacobian(
-    const ContactGeometry& geometry) const {
-  Eigen::Matrix<double, 3, 2> contact_jacobian;
-  contact_jacobian << 1.0, 0.0, 0.0, 1.0, geometry.gradient.x(), geometry.gradient.y();
-  return contact_jacobian + radius_ * normalJacobian(geometry);
 }
 
 Eigen::Vector3d TerrainKinematics::centreVelocity(const TerrainState& state,
                                                   const DriveRates& commanded) const {
   const ContactGeometry contact = geometry(state);
   const TerrainStateRate rate = stateRate(state, contact, commanded);
-  return centreJacobian(contact) * Eigen::Vector2d(rate.x_dot, rate.y_dot);
+  return centreJacobian(contact, radius_) * Eigen::Vector2d(rate.x_dot, rate.y_dot);
 }
 
 // Eq 46 (for RS, the shell turns by psi_dot = -alpha_dot sin(phi) about n, cancelling the tilted
@@ -173,19 +173,6 @@ TerrainState TerrainKinematics::constrain(const TerrainState& state) const {
     constrained.phi = 0.0;
   }
   return constrained;
-}
-
-ContactGeometry contactGeometryFromAxes(const Eigen::Vector3d& contact_point,
-                                        const Eigen::Vector3d& centre, const Eigen::Vector3d& normal,
-                                        const Eigen::Vector3d& heading) {
-  ContactGeometry geometry;
-  geometry.contact_point = contact_point;
-  geometry.centre = centre;
-  geometry.heading_frame.col(0) = heading;
-  geometry.heading_frame.col(1) = normal.cross(heading);
-  geometry.heading_frame.col(2) = normal;
-  geometry.gradient = -normal.head<2>() / normal.z();
-  return geometry;
 }
 
 }  // namespace spherical_robots::terrain

@@ -92,7 +92,7 @@ const char* const kExecuteColumns[] = {"t",         "x",         "y",          "
                                        "measured_1", "measured_2", "state"};
 
 int runRotorExecute(const ParsedOptions& options, std::ostream& out) {
-  const double radius = radiusFromUrdf(configDirectory(options) + "/urdf/rotor_sphere.urdf");
+  const double radius = radiusFromUrdf(configDirectory(options) + "/urdf/rotor_sphere.urdf", "base_link");
   // The stack's parameters as its nodes read them, the options overriding them.
   const config::YamlParameterSource stack(configDirectory(options) + "/config/rotor.yaml");
   rotor::ManoeuvreExecutive::Parameters parameters =

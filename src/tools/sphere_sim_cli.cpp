@@ -337,10 +337,10 @@ long wholeSteps(double span, double step, const std::string& what) {
   return static_cast<long>(whole);
 }
 
-double radiusFromUrdf(const std::string& path) {
+double radiusFromUrdf(const std::string& path, const std::string& link) {
   const std::string xml = config::readTextFile(path);  // its error names the path
   try {
-    return config::sphereRadiusFromUrdf(xml);
+    return config::sphereRadiusFromUrdf(xml, link);
   } catch (const std::invalid_argument& error) {
     throw InvalidInput(path + ": " + error.what());
   }

@@ -131,8 +131,8 @@ std::string configDirectory(const ParsedOptions& options);
 /// not a batch run) or not a whole number.
 long wholeSteps(double span, double step, const std::string& what);
 
-/// The radius [m] of the base_link sphere of the URDF at path. @throw InvalidInput naming the path.
-double radiusFromUrdf(const std::string& path);
+/// The radius [m] of the sphere of `link` in the URDF at path. @throw InvalidInput naming the path.
+double radiusFromUrdf(const std::string& path, const std::string& link);
 
 /// An output file that appears under its name only when committed: it is written to a temporary
 /// file beside it and renamed, so a run that fails half-way (exit 4) leaves no file behind.

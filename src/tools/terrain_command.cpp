@@ -76,7 +76,7 @@ const char* const kDescription =
     R"(The run starts at the origin with psi = phi = 0 and integrates the closed loop (the tracking
 law evaluated at every RK4 stage) with a fixed step. The scenario (surface, paths, the gains of
 both laws, RS tilt limit) is DIR/config/terrain.yaml, its surface replaced by --terrain's height
-map if given; the sphere's radius is the base_link sphere of DIR/urdf/terrain_robot.urdf.
+map if given; the sphere's radius is the shell link's sphere of DIR/urdf/terrain_robot.urdf.
 
 --loop sampled runs the loop as the launched stack (launch/terrain_stack.launch, clock:=lockstep,
 hardware:=sim with the actuator models of --actuator-models, ideal without) samples it, with the core code each node calls and in the order of one
@@ -164,7 +164,7 @@ TerrainRun::TerrainRun(const TerrainRunSettings& settings) : settings_(settings)
                                                                    "/config/roller.yaml"));
   const config::LayeredParameterSource parameters(std::move(layers));
   const config::TerrainConfig scenario = config::loadTerrainConfig(parameters);
-  const double radius = radiusFromUrdf(settings.config_dir + "/urdf/terrain_robot.urdf");
+  const double radius = radiusFromUrdf(settings.config_dir + "/urdf/terrain_robot.urdf", "shell");
   config::SurfaceSpec surface = scenario.surface;
   if (!settings.terrain.empty()) {
     surface.type = "height_map";

@@ -30,6 +30,11 @@ struct PlantLoopParameters {
   double lockstep_timeout = 2.0;  ///< [s] of wall time (lockstep): a silent participant is dropped
   int wait_for_subscribers = 1;   ///< time starts once this many nodes read the plant's state
   double start_timeout = 10.0;    ///< [s] of wall time: time starts anyway, with a warning
+  /// Where the stack's root frame (<ns>/odom; the FreeBOT's base) is in map: several robots on
+  /// one master side by side.
+  double origin_x = 0.0;    ///< [m]
+  double origin_y = 0.0;    ///< [m]
+  double origin_yaw = 0.0;  ///< [rad]
 };
 
 /// The plant's private parameters over `defaults` (each plant's: step, state_timeout,
@@ -38,7 +43,7 @@ struct PlantLoopParameters {
 /// clock (lockstep | free | ros, "ros"), speedup (lockstep: default 0, >= 0; free: > 0),
 /// lockstep_leader and lockstep_timeout, read in lockstep only (default 2 s, 1 s with a leader: a follower drops its own
 /// silent participant before the leader would drop the follower), wait_for_subscribers
-/// (integer >= 0), start_timeout.
+/// (integer >= 0), start_timeout, origin_x, origin_y, origin_yaw (finite).
 /// @throw std::invalid_argument naming the origin, the key, the value and the limit.
 PlantLoopParameters loadPlantLoopParameters(const ParameterSource& source,
                                             const PlantLoopParameters& defaults);

@@ -8,7 +8,7 @@ namespace spherical_robots::config {
 /// The radius [m] of the sphere that is the collision (else visual) geometry of `link`.
 /// @throw std::invalid_argument if the XML does not parse, the link is missing, or its geometry is
 /// not a sphere of positive, finite radius.
-double sphereRadiusFromUrdf(const std::string& urdf_xml, const std::string& link = "base_link");
+double sphereRadiusFromUrdf(const std::string& urdf_xml, const std::string& link);
 
 /// Reads a whole file. @throw std::invalid_argument naming the path if it cannot be read.
 std::string readTextFile(const std::string& path);

@@ -10,9 +10,10 @@
 // One step at time t (the first at t = step, as the lock-step clock's first step):
 // 1. norma_plant: the first step starts the timeline; a later one advances the plant by t minus
 //    the previous step with the last measured efforts held, or none if they are older than
-//    state_timeout; it publishes the state stamped t.
-// 2. pure_pursuit_controller: NormaControlLoop::step(t, state) and the command stamped t; a state
-//    the loop rejects commands nothing.
+//    state_timeout; it publishes the state (odom, joint_states) stamped t.
+// 2. norma_controller: NormaControlLoop::step(t, state) on the state as odom and joint_states
+//    carry it (ψ read back from odom's orientation: core/angles.hpp, yawOf(yawRotation(ψ))) and
+//    the command stamped t; a state the loop rejects commands nothing.
 // 3. hardware_interface: the command at t, then update(t); it publishes the applied efforts.
 // 4. The plant and the controller take in the applied efforts (for the next step).
 

@@ -16,19 +16,23 @@
 #include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
 #include <ros/time.h>
+#include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 #include <visualization_msgs/Marker.h>
 
 #include <string>
 #include <vector>
 
+#include "spherical_robots/config/odometry_parameters.hpp"
+#include "spherical_robots/core/simulated_sensors.hpp"
 #include "spherical_robots/core/stamp.hpp"
 #include "spherical_robots/terrain/teleop.hpp"
 
 namespace spherical_robots {
 
-/// The fixed frame of every plant and controller.
-inline const std::string kWorldFrame = "world";
+/// REP 105's root, shared by every stack on a master: each stack's <prefix>odom (the FreeBOT's
+/// base) is a static child of it (PlantLoop).
+inline const std::string kMapFrame = "map";
 
 /// A ROS time as the core's whole nanoseconds (core/stamp.hpp), which its decisions take.
 inline Nanoseconds nanosecondsOf(const ros::Time& t) { return static_cast<Nanoseconds>(t.toNSec()); }
@@ -76,12 +80,16 @@ geometry_msgs::PoseStamped toPoseStamped(const Eigen::Vector3d& position,
                                          const Eigen::Quaterniond& orientation,
                                          const std::string& frame, const ros::Time& stamp);
 
-/// Pose of `child` in `frame` and its twist, REP 105 style: the twist is expressed in `child`.
-/// @param linear_velocity, angular_velocity [m/s], [rad/s] in the world (`frame`) axes.
-nav_msgs::Odometry toOdometry(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
-                              const Eigen::Vector3d& linear_velocity,
-                              const Eigen::Vector3d& angular_velocity, const std::string& frame,
-                              const std::string& child, const ros::Time& stamp);
+/// REP 105 odometry, every field copied as given: the pose of `child` in `frame` (the orientation
+/// not normalised, so that a reader sees the very doubles the core computed), its twist in
+/// `child`'s axes, and the covariance diagonals of `odometry`.
+nav_msgs::Odometry bodyOdometry(const BodyMotion& motion, const config::OdometryParameters& odometry,
+                                const std::string& frame, const std::string& child,
+                                const ros::Time& stamp);
+
+/// An IMU's reading in `frame` (the body's), with the covariance diagonals of `odometry`.
+sensor_msgs::Imu toImu(const ImuReading& reading, const config::OdometryParameters& odometry,
+                       const std::string& frame, const ros::Time& stamp);
 
 // --- Drive rates <-> actuators -----------------------------------------------------------------
 
@@ -95,6 +103,10 @@ std::vector<double> velocitiesByName(const sensor_msgs::JointState& msg,
 /// max_effort.
 std::vector<double> effortsByName(const sensor_msgs::JointState& msg,
                                   const std::vector<std::string>& names, double max_effort);
+
+/// The position of each named joint in msg, as velocitiesByName, bounded by max_position.
+std::vector<double> positionsByName(const sensor_msgs::JointState& msg,
+                                    const std::vector<std::string>& names, double max_position);
 
 /// A JointState with these names and values (an empty list: the message leaves that field empty).
 sensor_msgs::JointState jointState(const std::vector<std::string>& names,
@@ -118,9 +130,13 @@ struct PlanarTwist {
 /// [m/s or rad/s] (a person's command, not an overflow: it would drive the robot at its limits).
 PlanarTwist planarTwist(const geometry_msgs::Twist& twist, double max_magnitude);
 
-/// Message (x, y, z, w) -> Eigen (w, x, y, z), normalised.
+/// Message (x, y, z, w) -> Eigen (w, x, y, z), coefficients copied.
 /// @throw std::invalid_argument naming `field` if a coefficient is not finite or
 /// |‖q‖ − 1| > tolerance.
+Eigen::Quaterniond checkedQuaternion(const geometry_msgs::Quaternion& q, const std::string& field,
+                                     double tolerance = 1e-6);
+
+/// checkedQuaternion, normalised.
 Eigen::Quaterniond fromQuaternion(const geometry_msgs::Quaternion& q, const std::string& field,
                                   double tolerance = 1e-6);
 

@@ -57,7 +57,7 @@ spherical_robots::MoveFreebotFeedback toMoveFreebotFeedback(const freebot::GoalV
 /// The tf frame of sphere B_i (i = 0: the fixed base): "<prefix>link<i>".
 std::string freebotLinkFrame(const std::string& prefix, std::size_t i);
 
-/// The chain on tf: kWorldFrame -> B_0 (identity), then per joint i B_{i-1} -> B_i.
+/// The chain on tf: per joint i B_{i-1} -> B_i (B_0, the fixed base, is under map: PlantLoop).
 std::vector<geometry_msgs::TransformStamped> freebotChainTransforms(
     const freebot::SrcManipulator& manipulator, const freebot::ChainState& state,
     const std::string& prefix, const ros::Time& stamp);

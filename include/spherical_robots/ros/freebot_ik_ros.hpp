@@ -28,6 +28,8 @@ struct FreebotIkParameters {
   double input_timeout = 0.1;        ///< [s] of freebot_state
   double max_stamp_skew = 1.0;       ///< [s] a freebot_state stamped further off the clock: rejected
   double max_goal_distance = 100.0;  ///< [m] a goal coordinate beyond it: REJECTED, not planned
+  /// The fixed base B_0's frame, <~frame_prefix>link0, in which goals are (Σ I of the paper).
+  std::string base_frame = "link0";
 };
 
 /// stack: the stack's namespace (config/freebot.yaml); node: the private one.

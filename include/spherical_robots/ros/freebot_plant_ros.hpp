@@ -16,7 +16,7 @@ namespace spherical_robots {
 /// Every parameter of freebot_plant but its loop's (PlantLoop; docs/nodes.md).
 struct FreebotPlantParameters {
   freebot::FreebotChain chain;        ///< freebot/radii, freebot/trolley/*
-  std::string frame_prefix;           ///< of every tf frame but world
+  std::string frame_prefix;           ///< of every tf frame but map
   double max_actuator_rate = 1000.0;  ///< [rad/s] a measured rate beyond it is rejected
 };
 

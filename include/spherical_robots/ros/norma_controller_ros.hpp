@@ -5,15 +5,15 @@
 
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <dynamic_reconfigure/server.h>
+#include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
+#include <sensor_msgs/JointState.h>
 
 #include <Eigen/Core>
 #include <memory>
+#include <optional>
 
 #include "spherical_robots/NormaControllerConfig.h"
-#include "spherical_robots/NormaState.h"
-#include <sensor_msgs/JointState.h>
-
 #include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/norma/norma_control_loop.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
@@ -29,8 +29,10 @@ struct NormaControllerParameters {
   /// The actuators' limits (as the hardware interface has them), for the anti-windup.
   norma::EffortLimits limits;
   double publish_rate = 50.0;   ///< [Hz] of tracking_error and target
-  double max_stamp_skew = 1.0;  ///< [s] a state stamped further from the clock is rejected
-  double input_timeout = 0.05;  ///< [s] older states and actuator states are stale
+  double max_stamp_skew = 1.0;  ///< [s] joint_states or odom stamped further from the clock: rejected
+  double input_timeout = 0.05;  ///< [s] older joint states, odometry and actuator states are stale
+  /// The frame of the odometry it reads, in which the path is (the stack's <prefix>odom).
+  std::string odom_frame = "odom";
 };
 
 /// @throw std::invalid_argument naming the parameter, its value and its limit.
@@ -53,9 +55,10 @@ class NormaControllerRos {
   NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh);
 
  private:
-  void onState(const spherical_robots::NormaState& msg);
-  /// Commands from one state (nothing for a rejected one).
-  void control(const spherical_robots::NormaState& msg);
+  void onJointStates(const sensor_msgs::JointState& msg);
+  void onOdometry(const nav_msgs::Odometry& msg);
+  /// Commands from one joint state with the latest pose (nothing for a rejected one).
+  void control(const sensor_msgs::JointState& msg);
   /// ROS time, or in lock-step the time of the latest step.
   ros::Time now() const;
   void onActuatorState(const sensor_msgs::JointState& msg);
@@ -71,13 +74,16 @@ class NormaControllerRos {
   ros::Time last_publish_;
   double max_state_age_ = 0.0;         ///< [s] since the last report: ROS time a state waited
   unsigned long late_commands_ = 0;    ///< commands sent more than kLateAge after their state
-  InputMonitor input_;
+  std::optional<norma::NormaMeasurement> pose_;  ///< X, Y, psi of the last good odom
+  InputMonitor input_;       ///< joint_states
+  InputMonitor odom_input_;
   InputMonitor actuator_input_;
-  ros::Subscriber state_sub_;
+  ros::Subscriber joint_sub_;
+  ros::Subscriber odom_sub_;
   ros::Subscriber actuator_sub_;
   StepPublications step_publications_;
-  /// Commands each state when it comes, or in lock-step at the step it is stamped with.
-  MessageDrivenWork<spherical_robots::NormaState> work_;
+  /// Commands each joint state when it comes, or in lock-step at the step it is stamped with.
+  MessageDrivenWork<sensor_msgs::JointState> work_;
   LoopPublisher command_pub_;
   LoopPublisher error_pub_;
   LoopPublisher target_pub_;

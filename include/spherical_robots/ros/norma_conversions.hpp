@@ -1,7 +1,8 @@
 #pragma once
-// The Norma stack's messages: NormaState both ways, the URDF's joints, the actuators' efforts,
-// the tracking error and the path of eq 52 for rviz.
+// The Norma stack's messages: NormaState, the URDF's joints, the measurement odometry and
+// joint_states carry, the actuators' efforts, the tracking error and the path of eq 52 for rviz.
 
+#include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
 #include <sensor_msgs/JointState.h>
 
@@ -25,8 +26,17 @@ spherical_robots::NormaState toNormaStateMsg(const norma::NormaState& state,
                                              const norma::Efforts& driving, double energy,
                                              const ros::Time& stamp);
 
-/// The measurement a NormaState message carries (the control loop validates it).
-norma::NormaMeasurement normaMeasurementFromMsg(const spherical_robots::NormaState& msg);
+/// The pose odometry carries, as the controller reads it: X, Y of odom's position and
+/// ψ = yawOf(its orientation), in (−π, π]; q and q̇ zero. The control loop bounds the values.
+/// @throw std::invalid_argument naming the field: a non-finite position, a non-finite or
+/// non-unit orientation.
+norma::NormaMeasurement normaPoseFromOdometry(const nav_msgs::Odometry& odom);
+
+/// `pose` with q and q̇ of the URDF's joints on joint_states, by name (normaJointState's).
+/// @throw std::invalid_argument naming the problem: a joint missing, fewer positions or
+/// velocities than names, a non-finite value.
+norma::NormaMeasurement withNormaJoints(norma::NormaMeasurement pose,
+                                        const sensor_msgs::JointState& joints);
 
 /// The URDF's joints (urdf/norma.urdf): tilt φ, shell θ, pendulum α (relative to the shell),
 /// slider δ, with positions and rates.
@@ -35,13 +45,15 @@ sensor_msgs::JointState normaJointState(const norma::NormaState& state, const ro
 /// The actuators' command: T [N m] and F [N] as efforts.
 sensor_msgs::JointState normaEffortCommand(double torque, double force, const ros::Time& stamp);
 
-/// The error to the reference point of the path, in the plane z = 0 of kWorldFrame.
+/// The error to the reference point of the path, in the plane z = 0 of `frame` (the odometry's).
 /// @param error_norm, zeta what the controller computed for this state (|e| [m], ζ [rad]).
 spherical_robots::TrackingError toNormaTrackingErrorMsg(const norma::PathPoint& reference, double x,
                                                         double y, double error_norm, double zeta,
+                                                        const std::string& frame,
                                                         const ros::Time& stamp);
 
-/// One period [s] of the path of eq 52 in kWorldFrame, `samples` + 1 poses (closing the loop).
-nav_msgs::Path lissajousPathMsg(double period, int samples, const ros::Time& stamp);
+/// One period [s] of the path of eq 52 in `frame`, `samples` + 1 poses (closing the loop).
+nav_msgs::Path lissajousPathMsg(double period, int samples, const std::string& frame,
+                                const ros::Time& stamp);
 
 }  // namespace spherical_robots::conversions

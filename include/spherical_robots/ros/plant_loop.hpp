@@ -7,6 +7,7 @@
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
+#include <tf2_ros/static_transform_broadcaster.h>
 
 #include <Eigen/Geometry>
 #include <memory>
@@ -60,6 +61,10 @@ class PlantLoop {
     std::string hardware_id;  ///< e.g. "Norma"
     config::PlantLoopParameters parameters;  ///< step, state_timeout, trail_period, free pace
     std::size_t max_trail_points = 0;
+    /// The frame the model's coordinates are in, directly under map (kMapFrame): the stack's
+    /// <prefix>odom, or the FreeBOT's fixed base. The loop publishes map -> it (static, at the
+    /// origin_* parameters) and the trail in it.
+    std::string root_frame;
   };
 
   /// Reads the private parameters (pnh) with config::loadPlantLoopParameters. Nothing runs
@@ -72,6 +77,7 @@ class PlantLoop {
     return step_publications_.advertise<Message>(nh_, topic);
   }
   const TfPublisher& tf() const { return tf_; }
+  const std::string& rootFrame() const { return defaults_.root_frame; }
   double step() const { return parameters_.step; }
   /// Subscribes actuators/state (relative to the node handle), adds the model's diagnostics and
   /// starts the clock; `state` is the topic whose subscribers time waits for (wait_for_subscribers).
@@ -90,6 +96,7 @@ class PlantLoop {
   InputMonitor actuator_input_;
   StepPublications step_publications_;
   TfPublisher tf_;
+  tf2_ros::StaticTransformBroadcaster static_tf_;  ///< map -> the root frame
   std::optional<Trail> trail_;
   ros::Time last_publish_;
   PlantModel* model_ = nullptr;

@@ -5,6 +5,8 @@
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Path.h>
+#include <nav_msgs/Odometry.h>
+#include <sensor_msgs/JointState.h>
 #include <ros/ros.h>
 #include <tf2_ros/buffer.h>
 #include <tf2_ros/transform_listener.h>
@@ -14,12 +16,12 @@
 #include <set>
 #include <string>
 
-#include "spherical_robots/TerrainState.h"
 #include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/ros/terrain_conversions.hpp"
 #include "spherical_robots/core/clock_jump.hpp"
 #include "spherical_robots/core/input_health.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/terrain/body_frame.hpp"
 #include "spherical_robots/terrain/path_tracker.hpp"
 #include "spherical_robots/terrain/pursuit_law.hpp"
 #include "spherical_robots/terrain/pure_pursuit.hpp"
@@ -50,12 +52,15 @@ struct PurePursuitControllerParameters {
   double untimed_speed = 0.1;      ///< [m/s] along a received path whose stamps are all equal
   /// [s] of wall time a received path in another frame waits for tf before it is refused
   double path_tf_timeout = 1.0;
+  /// The frame of the odometry it reads, in which the terrain and the path are (the stack's
+  /// <prefix>odom); odometry in another frame is rejected, a path in another frame transformed.
+  std::string odom_frame = "odom";
   double rate = 50.0;              ///< [Hz] of actuators/command
-  /// [s] an older terrain_state (ROS time) or cmd_vel (wall time) is stale: the command is zero.
+  /// [s] an older odom (ROS time) or cmd_vel (wall time) is stale: the command is zero.
   double input_timeout = 0.5;
-  double max_position = 1e3;       ///< [m] a terrain_state point beyond it is rejected
+  double max_position = 1e3;       ///< [m] an odom position beyond it is rejected
   double max_cmd_vel = 10.0;       ///< [m/s, rad/s] a cmd_vel field beyond it is rejected
-  double max_stamp_skew = 1.0;     ///< [s] a terrain_state stamped further from the clock is rejected
+  double max_stamp_skew = 1.0;     ///< [s] odom or joint_states stamped further from the clock is rejected
   double max_clock_step = kDefaultMaxClockStep;  ///< [s] a longer step of ROS time is a jump
   double teleop_tilt_gain = 2.0;   ///< [1/s] RS in teleop: the tilt servo's gain
 };
@@ -75,10 +80,16 @@ class PurePursuitControllerRos {
  private:
   using Mode = PurePursuitControllerParameters::Mode;
 
-  void onTerrainState(const spherical_robots::TerrainState& msg);
+  void onOdometry(const nav_msgs::Odometry& msg);
+  /// RS: its tilt.
+  void onJointStates(const sensor_msgs::JointState& msg);
+  /// @throw std::invalid_argument naming `topic` if `stamp` is unset or too far from now().
+  void acceptStamp(const ros::Time& stamp, const std::string& topic) const;
+  /// When an input stamped `stamp` counts as received.
+  ros::Time inputTime(const ros::Time& stamp) const;
   void onPath(const ros::MessageEvent<const nav_msgs::Path>& event);
   /// Takes in the path that arrived last, or refuses it: at once, or once its frame has a
-  /// transform to the fixed frame (waiting up to ~path_tf_timeout of wall time for tf).
+  /// transform to the odometry's frame (waiting up to ~path_tf_timeout of wall time for tf).
   void resolvePendingPath();
   /// Follows `path` (received at `received`, its first pose stamped `first_stamp`), from `origin`.
   void follow(std::unique_ptr<terrain::SampledPath> path, const ros::Time& first_stamp,
@@ -91,7 +102,7 @@ class PurePursuitControllerRos {
   std::vector<std::string> control(const ros::Time& now);
   /// ROS time, or in lock-step the time of the latest step.
   ros::Time now() const;
-  /// The set-points in tracking mode; zero without a fresh terrain_state.
+  /// The set-points in tracking mode; zero without a fresh odom.
   terrain::DriveRates track(const ros::Time& now);
   /// The set-points in teleop mode; zero without a fresh cmd_vel.
   terrain::DriveRates teleop();
@@ -111,6 +122,7 @@ class PurePursuitControllerRos {
   PurePursuitControllerParameters parameters_;
   double radius_;
   std::unique_ptr<terrain::Surface> surface_;
+  std::unique_ptr<terrain::BodyFrame> body_frame_;  ///< odometry's pose to the contact geometry
   std::unique_ptr<terrain::PursuitController> controller_;
   // Tracking mode: the path followed (null with ~path topic until one arrives) and its tracker.
   std::unique_ptr<terrain::ReferencePath> path_;
@@ -124,8 +136,8 @@ class PurePursuitControllerRos {
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
   ros::WallTimer path_tf_timer_;  ///< retries a pending path while it waits for tf
 
-  std::optional<terrain::ContactGeometry> geometry_;  ///< from the last good terrain_state
-  double tilt_ = 0.0;                                 ///< RS phi from the last good terrain_state
+  std::optional<terrain::ContactGeometry> geometry_;  ///< from the last good odom
+  double tilt_ = 0.0;                                 ///< RS phi from the last good joint_states
   terrain::VelocityRequest request_;                  ///< from the last good cmd_vel
   std::unique_ptr<terrain::TeleopMapping> teleop_mapping_;
   std::set<std::string> warned_ignored_;
@@ -134,9 +146,11 @@ class PurePursuitControllerRos {
   unsigned long failures_ = 0;
   ClockJumpDetector clock_;
 
-  InputMonitor input_;  ///< terrain_state (tracking) or cmd_vel (teleop)
+  InputMonitor input_;  ///< odom (tracking) or cmd_vel (teleop)
+  InputMonitor tilt_input_;  ///< RS: joint_states
   ros::WallTime last_cmd_vel_wall_;  ///< arrival of the last good cmd_vel
-  ros::Subscriber state_sub_;
+  ros::Subscriber odom_sub_;
+  ros::Subscriber joint_sub_;  ///< RS only
   ros::Subscriber cmd_vel_sub_;
   ros::Subscriber path_sub_;
   StepPublications step_publications_;

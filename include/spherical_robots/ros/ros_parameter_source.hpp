@@ -48,8 +48,8 @@ auto fromRobotDescription(const ros::NodeHandle& nh, Read read) {
   }
 }
 
-/// The sphere radius [m] from the URDF in parameter `robot_description` of nh (the base_link
-/// collision sphere). @throw std::invalid_argument if the parameter is missing or the URDF bad.
+/// The sphere radius [m] from the URDF in parameter `robot_description` of nh (the collision
+/// sphere of link `shell`, urdf/terrain_robot.urdf). @throw std::invalid_argument if the parameter is missing or the URDF bad.
 double radiusFromRobotDescription(const ros::NodeHandle& nh);
 
 }  // namespace spherical_robots

@@ -4,9 +4,12 @@
 // as odometry, tf and the rotors' joint states.
 
 #include <array>
+#include <optional>
 #include <string>
 
+#include "spherical_robots/config/odometry_parameters.hpp"
 #include "spherical_robots/config/parameter_source.hpp"
+#include "spherical_robots/ros/odometry_publisher.hpp"
 #include "spherical_robots/ros/plant_loop.hpp"
 #include "spherical_robots/rotor/contact_kinematics.hpp"
 #include "spherical_robots/rotor/dynamic_realizability.hpp"
@@ -18,8 +21,9 @@ struct RotorPlantParameters {
   double inertia_ratio = 2.5;          ///< k, the stack's (shared with rotor_planner)
   double rotor_inertia_scale = 12.0;   ///< J_zz / J_r, the stack's
   double sphere_radius = 0.1;          ///< R [m]
-  std::string frame_prefix;            ///< of every tf frame but world
+  std::string frame_prefix;            ///< of every tf frame but map
   double max_actuator_rate = 1000.0;   ///< [rad/s] a measured rate beyond it is rejected
+  config::OdometryParameters odometry;  ///< odom's covariances, noise; the IMU
 };
 
 /// stack: the stack's namespace (inertia_ratio, rotor_inertia_scale); node: the private one.
@@ -42,11 +46,12 @@ class RotorPlantRos : private PlantModel {
   std::string describeState() const override;
 
   RotorPlantParameters parameters_;
-  std::string base_frame_;
+  std::string odom_frame_;
+  std::string base_frame_;  ///< the shell itself: the sphere has no non-rolling body
   rotor::ContactCoordinates state_;
   rotor::RotorSpeeds speeds_;  ///< measured [rad/s]
   std::array<double, 2> positions_{};  ///< measured rotor angles [rad], for the URDF joints
-  LoopPublisher odom_pub_;
+  std::optional<OdometryPublisher> odometry_;  ///< made once loop_ is
   LoopPublisher joint_pub_;
   PlantLoop loop_;  ///< last: its clock stops before the rest goes
 };

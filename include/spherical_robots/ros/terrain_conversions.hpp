@@ -2,6 +2,7 @@
 // The terrain and roller stacks' messages (Moazami et al.): drive rates as actuator JointStates,
 // TerrainState, TrackingError, and the path and surface for rviz.
 
+#include <nav_msgs/Odometry.h>
 #include <nav_msgs/Path.h>
 #include <sensor_msgs/JointState.h>
 #include <visualization_msgs/Marker.h>
@@ -11,6 +12,7 @@
 #include "spherical_robots/TerrainState.h"
 #include "spherical_robots/TrackingError.h"
 #include "spherical_robots/ros/conversions.hpp"
+#include "spherical_robots/terrain/body_frame.hpp"
 #include "spherical_robots/terrain/pure_pursuit.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/robot_type.hpp"
@@ -32,21 +34,28 @@ terrain::DriveRates ratesFromJointState(terrain::RobotType type, const sensor_ms
 sensor_msgs::JointState jointStateFromRates(terrain::RobotType type, const terrain::DriveRates& rates,
                                             const ros::Time& stamp);
 
-/// The plant's state message, in frame "world".
+/// The plant's state message (kept for plots, tests and bags; no controller reads it), in `frame`.
 /// @param realised the rates the robot realises (TerrainKinematics::realisedRates).
 spherical_robots::TerrainState toTerrainStateMsg(terrain::RobotType type, terrain::ContactModel model,
                                                  const terrain::TerrainState& state,
                                                  const terrain::ContactGeometry& geometry,
                                                  const terrain::DriveRates& realised,
-                                                 const ros::Time& stamp);
+                                                 const std::string& frame, const ros::Time& stamp);
 
-/// The contact geometry a TerrainState message describes: P0, centre, R_L = [h, n x h, n] and the
-/// gradient (f_x, f_y) = -(n_x, n_y) / n_z.
-/// @throw std::invalid_argument if a field is not finite, a coordinate of P0 or the centre exceeds
-/// max_position [m], n or h is not a unit vector, h is not perpendicular to n, or n does not point
-/// up (tolerance 1e-6).
-terrain::ContactGeometry contactGeometryFromMsg(const spherical_robots::TerrainState& msg,
-                                                double max_position);
+/// The body's pose an Odometry message carries (fields copied: the orientation is not
+/// normalised, BodyFrame::state does not need it to be).
+/// @throw std::invalid_argument if a coordinate of the position is not finite or exceeds
+/// max_position [m], or the orientation is not finite or not a unit quaternion (within 1e-6).
+terrain::BodyPose bodyPoseFromOdometry(const nav_msgs::Odometry& msg, double max_position);
+
+/// The RS tilt joint on joint_states (the one internal joint of a terrain robot): kTiltJoint with
+/// phi [rad] and its rate [rad/s].
+inline const std::string kTiltJoint = "tilt";
+sensor_msgs::JointState tiltJointState(double phi, double phi_rate, const ros::Time& stamp);
+
+/// The position of kTiltJoint in msg [rad]. @throw std::invalid_argument if it is missing, not
+/// finite or of magnitude above pi/2.
+double tiltFromJointState(const sensor_msgs::JointState& msg);
 
 spherical_robots::TrackingError toTrackingErrorMsg(const terrain::TrackingError& error,
                                                    const terrain::DesiredPoint& desired,

@@ -5,9 +5,10 @@
 // float64 values. At each step t:
 //   1. the plant (terrain_plant) advances from its last step to t with the rates it last
 //      measured held (at rest if they are older than the state timeout), and every publish period
-//      sends its state;
+//      sends its odometry (the body's pose, BodyFrame::pose) and RS tilt;
 //   2. the controller (pure_pursuit_controller), at its rate, commands from the last state it
-//      received (at rest if older than its input timeout), the geometry rebuilt from the message;
+//      received (at rest if older than its input timeout), the geometry recovered from the
+//      body's pose through the terrain model (BodyFrame::state);
 //   3. the hardware interface (hardware_interface_sim, ideal actuators) takes the command at t and,
 //      at its rate, advances the actuators to t and reports their velocities, which the plant reads.
 // Each part is the core code its node calls (advanceWithHeldRates, PathTracker,
@@ -21,6 +22,7 @@
 #include "spherical_robots/core/loop_timeline.hpp"
 #include "spherical_robots/core/stamp.hpp"
 #include "spherical_robots/hardware/simulated_actuators.hpp"
+#include "spherical_robots/terrain/body_frame.hpp"
 #include "spherical_robots/terrain/path_tracker.hpp"
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
 
@@ -62,10 +64,10 @@ class DirectDrive final : public ActuatorDrive {
 /// (launch/roller_stack.launch: max_velocity 60, max_acceleration 300).
 struct StackSampling {
   double plant_step = 0.01;        ///< terrain_plant ~step [s]
-  double publish_rate = 50.0;      ///< terrain_plant ~publish_rate [Hz]: terrain_state
+  double publish_rate = 50.0;      ///< terrain_plant ~publish_rate [Hz]: odom, terrain_state
   double state_timeout = 0.5;      ///< terrain_plant ~state_timeout [s]: actuator states
   double control_rate = 50.0;      ///< pure_pursuit_controller ~rate [Hz]
-  double input_timeout = 0.5;      ///< pure_pursuit_controller ~input_timeout [s]: terrain_state
+  double input_timeout = 0.5;      ///< pure_pursuit_controller ~input_timeout [s]: odom
   double hardware_rate = 100.0;    ///< hardware_interface ~rate [Hz]
   double max_velocity = 20.0;      ///< hardware_interface ~max_velocity [rad/s]
   double max_acceleration = 50.0;  ///< hardware_interface ~max_acceleration [rad/s^2]
@@ -121,6 +123,7 @@ class SampledTerrainLoop {
 
   Nanoseconds now_ = 0;
   LoopTimeline timeline_;  ///< the plant's (PlantLoop's): start, elapsed time
+  BodyFrame body_frame_;   ///< odometry's pose to the state, as the controller recovers it
   // The plant (terrain_plant).
   TerrainState state_;
   Eigen::Quaterniond orientation_;
@@ -129,7 +132,7 @@ class SampledTerrainLoop {
   DriveRates drive_;              ///< what moved the plant in the latest step
   Nanoseconds last_publish_ = 0;  ///< 0: never
   // The controller (pure_pursuit_controller).
-  ContactGeometry received_;      ///< from the last terrain_state
+  ContactGeometry received_;      ///< from the last odom
   double received_tilt_ = 0.0;
   Nanoseconds received_at_ = 0;   ///< 0: none yet
   Nanoseconds control_due_ = 0;

@@ -15,6 +15,10 @@ Eigen::Vector3d surfaceNormal(const Eigen::Vector2d& gradient);
 /// @throw std::invalid_argument on a non-finite gradient.
 Eigen::Matrix3d tangentFrame(const Eigen::Vector2d& gradient);
 
+/// The rate [rad/s] at which the tangent frame turns about n while n changes at n_dot [1/s]:
+/// z . (n_dot x n) / (1 + n_z) (the minimal rotation's own turning; docs/conventions.md).
+double tangentFrameSpin(const Eigen::Vector3d& normal, const Eigen::Vector3d& normal_rate);
+
 /// R_L = R_T Rz(psi): world <- heading frame, columns (h, l, n), with psi [rad] the heading
 /// measured right-handed about n (docs/conventions.md; the printed eq 25 has the opposite sign).
 Eigen::Matrix3d headingFrame(const Eigen::Vector2d& gradient, double psi);

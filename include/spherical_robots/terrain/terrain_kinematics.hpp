@@ -58,13 +58,16 @@ struct ContactGeometry {
   Eigen::Matrix2d hessian = Eigen::Matrix2d::Zero();        ///< f's Hessian at P0 [1/m]
 };
 
-/// The geometry as a state message carries it (P0, centre, normal n, heading h), rebuilt as the
-/// controller rebuilds it from the message: l = n x h, the gradient from n = (-f_x, -f_y, 1) / |.|,
-/// no Hessian. A batch run that replays the stack passes its geometry through this, so that its
-/// controller sees the very doubles the stack's controller sees. n and h are taken as given.
-ContactGeometry contactGeometryFromAxes(const Eigen::Vector3d& contact_point,
-                                        const Eigen::Vector3d& centre, const Eigen::Vector3d& normal,
-                                        const Eigen::Vector3d& heading);
+/// The geometry at a state of a sphere of `radius` [m] on `surface`.
+/// @throw std::invalid_argument if the state is not finite.
+ContactGeometry contactGeometry(const Surface& surface, double radius, const TerrainState& state);
+
+/// [dn/dx dn/dy] [1/m] of the unit normal as a function of the contact point, at `geometry`.
+Eigen::Matrix<double, 3, 2> normalJacobian(const ContactGeometry& geometry);
+
+/// [dC/dx dC/dy] [-] of the centre C(x, y) = P0 + R n(P0) (eq 51) as a function of the contact
+/// point, at `geometry`, for a sphere of `radius` [m].
+Eigen::Matrix<double, 3, 2> centreJacobian(const ContactGeometry& geometry, double radius);
 
 class TerrainKinematics {
  public:
@@ -110,11 +113,6 @@ class TerrainKinematics {
   TerrainState constrain(const TerrainState& state) const;
 
  private:
-  /// [dn/dx dn/dy] of the unit normal as a function of the contact point [1/m].
-  Eigen::Matrix<double, 3, 2> normalJacobian(const ContactGeometry& geometry) const;
-  /// [dC/dx dC/dy] for the centre C(x, y) = P0 + R n(P0) as a function of the contact point.
-  Eigen::Matrix<double, 3, 2> centreJacobian(const ContactGeometry& geometry) const;
-
   const Surface& surface_;
   RobotType type_;
   double radius_;
