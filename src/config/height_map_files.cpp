@@ -6,13 +6,15 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
+
+#include "spherical_robots/config/csv_lines.hpp"
 
 namespace spherical_robots::config {
 namespace {
@@ -209,33 +211,23 @@ Eigen::MatrixXd readCsvGrid(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw fileError(path, std::string("cannot read: ") + std::strerror(errno));
   std::vector<std::vector<double>> rows;
-  std::size_t first_line = 0;
-  std::string line;
-  for (std::size_t number = 1; std::getline(in, line); ++number) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.find_first_not_of(" \t") == std::string::npos || line[0] == '#') continue;
+  int first_line = 0;
+  for (const CsvLine& line : readCsvLines(in)) {
     std::vector<double> row;
-    std::istringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) {
-      char* end = nullptr;
-      const double value = std::strtod(cell.c_str(), &end);
-      const bool blank_tail = std::string(end).find_first_not_of(" \t") == std::string::npos;
-      if (end == cell.c_str() || !blank_tail || !std::isfinite(value)) {
-        throw fileError(path, "line " + std::to_string(number) + ", column " +
-                                  std::to_string(row.size() + 1) + ": '" + cell +
-                                  "' is not a finite number");
+    for (const std::string& cell : line.cells) {
+      const std::optional<double> value = csvNumber(cell);
+      if (!value || !std::isfinite(*value)) {
+        throw fileError(path, "line " + std::to_string(line.number) + ", column " +
+                                  std::to_string(row.size() + 1) + ": " +
+                                  (cell.empty() ? std::string("empty cell")
+                                                : "'" + cell + "' is not a finite number"));
       }
-      row.push_back(value);
-    }
-    if (!line.empty() && line.back() == ',') {
-      throw fileError(path, "line " + std::to_string(number) + ", column " +
-                                std::to_string(row.size() + 1) + ": empty cell");
+      row.push_back(*value);
     }
     if (rows.empty()) {
-      first_line = number;
+      first_line = line.number;
     } else if (row.size() != rows.front().size()) {
-      throw fileError(path, "line " + std::to_string(number) + " has " +
+      throw fileError(path, "line " + std::to_string(line.number) + " has " +
                                 std::to_string(row.size()) + " cells, line " +
                                 std::to_string(first_line) + " has " +
                                 std::to_string(rows.front().size()));

@@ -1,38 +1,14 @@
 #include "path_file.hpp"
 
-#include <charconv>
 #include <fstream>
 #include <stdexcept>
 #include <vector>
 
+#include "spherical_robots/config/csv_lines.hpp"
 #include "sphere_sim_cli.hpp"
 
 namespace spherical_robots::sphere_sim {
 namespace {
-
-std::string trimmed(const std::string& text) {
-  const std::size_t first = text.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return {};
-  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
-}
-
-std::vector<std::string> cellsOf(const std::string& line) {
-  std::vector<std::string> cells;
-  std::size_t start = 0;
-  for (std::size_t comma; (comma = line.find(',', start)) != std::string::npos; start = comma + 1)
-    cells.push_back(trimmed(line.substr(start, comma - start)));
-  cells.push_back(trimmed(line.substr(start)));
-  return cells;
-}
-
-/// The whole cell as a double; nan and inf parse (the path rejects them, naming the point).
-std::optional<double> number(const std::string& cell) {
-  double value = 0.0;
-  const char* last = cell.data() + cell.size();
-  const auto [end, error] = std::from_chars(cell.data(), last, value);
-  if (cell.empty() || end != last || error != std::errc()) return std::nullopt;
-  return value;
-}
 
 std::string joined(const std::vector<std::string>& cells) {
   std::string text;
@@ -50,15 +26,11 @@ terrain::SampledPath readPathFile(const std::string& file, std::optional<double>
   std::vector<std::string> columns;  // t,x,y or x,y
   std::vector<std::vector<double>> rows;
   std::vector<int> row_lines;
-  int line_number = 0;
-  for (std::string line; std::getline(in, line);) {
-    ++line_number;
-    line = trimmed(line);
-    if (line.empty() || line[0] == '#') continue;
-    const std::vector<std::string> cells = cellsOf(line);
+  for (const config::CsvLine& line : config::readCsvLines(in)) {
+    const std::vector<std::string>& cells = line.cells;
     std::vector<double> values;
     for (const std::string& cell : cells) {
-      const std::optional<double> value = number(cell);
+      const std::optional<double> value = config::csvNumber(cell);
       if (!value) break;
       values.push_back(*value);
     }
@@ -66,29 +38,29 @@ terrain::SampledPath readPathFile(const std::string& file, std::optional<double>
       if (values.size() != cells.size()) {  // a header
         if (cells != std::vector<std::string>{"t", "x", "y"} &&
             cells != std::vector<std::string>{"x", "y"}) {
-          throw InvalidInput(at_line(line_number) + "'" + line +
+          throw InvalidInput(at_line(line.number) + "'" + line.text +
                              "' is neither a header (t,x,y or x,y) nor a row of numbers");
         }
         columns = cells;
         continue;
       }
       if (cells.size() != 2 && cells.size() != 3) {
-        throw InvalidInput(at_line(line_number) + std::to_string(cells.size()) +
+        throw InvalidInput(at_line(line.number) + std::to_string(cells.size()) +
                            " cells; a row is t,x,y or x,y");
       }
       columns = cells.size() == 3 ? std::vector<std::string>{"t", "x", "y"}
                                   : std::vector<std::string>{"x", "y"};
     }
     if (cells.size() != columns.size()) {
-      throw InvalidInput(at_line(line_number) + std::to_string(cells.size()) + " cells, expected " +
+      throw InvalidInput(at_line(line.number) + std::to_string(cells.size()) + " cells, expected " +
                          std::to_string(columns.size()) + " (" + joined(columns) + ")");
     }
     if (values.size() != cells.size()) {
-      throw InvalidInput(at_line(line_number) + "'" + cells[values.size()] + "' (column " +
+      throw InvalidInput(at_line(line.number) + "'" + cells[values.size()] + "' (column " +
                          columns[values.size()] + ") is not a number");
     }
     rows.push_back(values);
-    row_lines.push_back(line_number);
+    row_lines.push_back(line.number);
   }
 
   if (columns.empty()) throw InvalidInput("--path-file " + file + " holds no rows");
