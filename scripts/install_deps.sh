@@ -9,7 +9,7 @@ packages=(
   python3-colcon-defaults python3-colcon-pkg-config python3-colcon-package-selection
   python3-catkin-pkg python3-setuptools ros-message-generation ros-message-runtime
   # ROS libraries and messages
-  ros-base-dev libtf2-ros-dev libtf2-msgs-dev
+  ros-base-dev libtf2-ros-dev libtf2-msgs-dev libtf2-eigen-dev
   libnav-msgs-dev libvisualization-msgs-dev libgeometry-msgs-dev libsensor-msgs-dev
   libdiagnostic-msgs-dev libstd-msgs-dev libstd-srvs-dev libdiagnostic-updater-dev
   # the FreeBOT goals and the rotor manoeuvres as actions (action/)

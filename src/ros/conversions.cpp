@@ -1,5 +1,6 @@
 #include "spherical_robots/ros/conversions.hpp"
-#include "spherical_robots/core/validation.hpp"
+
+#include <tf2_eigen/tf2_eigen.h>
 
 #include <algorithm>
 #include <cmath>
@@ -7,33 +8,18 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "spherical_robots/core/validation.hpp"
+
 namespace spherical_robots::conversions {
 
-geometry_msgs::Point toPoint(const Eigen::Vector3d& p) {
-  geometry_msgs::Point msg;
-  msg.x = p.x();
-  msg.y = p.y();
-  msg.z = p.z();
-  return msg;
-}
+geometry_msgs::Point toPoint(const Eigen::Vector3d& p) { return tf2::toMsg(p); }
 
 geometry_msgs::Vector3 toVector3(const Eigen::Vector3d& v) {
   geometry_msgs::Vector3 msg;
-  msg.x = v.x();
-  msg.y = v.y();
-  msg.z = v.z();
-  return msg;
+  return tf2::toMsg(v, msg);
 }
 
-geometry_msgs::Quaternion toQuaternion(const Eigen::Quaterniond& q) {
-  const Eigen::Quaterniond unit = q.normalized();
-  geometry_msgs::Quaternion msg;
-  msg.x = unit.x();
-  msg.y = unit.y();
-  msg.z = unit.z();
-  msg.w = unit.w();
-  return msg;
-}
+geometry_msgs::Quaternion toQuaternion(const Eigen::Quaterniond& q) { return tf2::toMsg(q.normalized()); }
 
 namespace {
 
