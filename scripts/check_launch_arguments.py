@@ -271,6 +271,7 @@ DOMAINS = {
     'hardware': Hardware(none_allowed=True),
     'actuator_models': ActuatorModels(),
     'nodelet': BOOLEAN,
+    'respawn': BOOLEAN,
     'wait_for_subscribers': Number(minimum=0, whole=True),
     # Norma
     'controller': Choice('paper', 'tracking'),
