@@ -212,7 +212,9 @@ def main(argv):
     parser.add_argument('--at', type=float, default=30.0, help='[s] simulated')
     parser.add_argument('--duration', type=float, default=120.0, help='[s] simulated')
     parser.add_argument('args', nargs='*', help='launch arguments NAME:=VALUE')
-    parsed = parser.parse_args(rospy.myargv(argv)[1:])
+    # rostest adds where rosunit writes its results
+    parsed = parser.parse_args([a for a in rospy.myargv(argv)[1:]
+                                if not a.startswith('--gtest_output=')])
     Options.stack, Options.kill, Options.respawn = parsed.stack, parsed.kill, parsed.respawn
     Options.at, Options.duration = parsed.at, parsed.duration
     Options.args = parsed.args
