@@ -33,8 +33,9 @@ import rospkg
 
 PKG = 'spherical_robots'
 # At a normal end of a nodelet stack the plant shuts its manager down, and the loaders of the
-# other nodelets end with it, in any order; a death is a failure once no normal end followed it
-# within this many seconds of wall time.
+# other nodelets end with it, in any order: there a death is a failure once no normal end has
+# followed it within this many seconds of wall time. A stack of processes ends with its plant
+# alone, so any other death there is a failure at once.
 SETTLE = 3.0
 
 
@@ -45,7 +46,7 @@ class StackEnd:
     ends the stack; `ends_stack(node)`: whether that node ends it normally by exiting with
     status 0. Times are seconds (any monotonic clock)."""
 
-    def __init__(self, required, ends_stack, settle=SETTLE):
+    def __init__(self, required, ends_stack, settle):
         self.required, self.ends_stack, self.settle = set(required), ends_stack, settle
         self.first_failure = None
         self.failures = []
@@ -144,7 +145,8 @@ def main(argv):
         roslaunch.core.printerrlog(str(error))
         parent.shutdown()
         return 2
-    end = StackEnd(parent.required, ends_stack)
+    nodelets = any(node.rsplit('/', 1)[-1] == 'nodelet_manager' for node in parent.required)
+    end = StackEnd(parent.required, ends_stack, SETTLE if nodelets else 0.0)
     interrupted = []
     # Ctrl-C reaches the nodes too, and a plant that exits 0 on it has not ended the stack.
     roslaunch_handler = signal.getsignal(signal.SIGINT)

@@ -39,11 +39,11 @@ from spherical_robots_testing import free_port
 PKG = 'spherical_robots'
 SOURCE = os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
 RUN_STACK = os.path.join(SOURCE, 'scripts', 'run_stack.py')
-# [s] of wall time from a kill to run_stack.py's exit with respawn:=false: its own SETTLE (3 s)
-# after roslaunch's process monitor and its queue notice the death (0.1 s polls each), then
-# roslaunch's shutdown of the other processes (SIGINT, SIGTERM after 15 s), plus 5 s for a busy
-# machine.
-FAILURE_BOUND = 3.0 + 0.2 + 15.0 + 5.0
+# [s] of wall time from a kill to run_stack.py's exit with respawn:=false: roslaunch's process
+# monitor and run_stack.py's queue notice the death (0.1 s polls each; a stack of processes has no
+# SETTLE), then roslaunch shuts the other processes down (SIGINT, SIGTERM after 15 s), plus 5 s for
+# a busy machine.
+FAILURE_BOUND = 0.2 + 15.0 + 5.0
 WINDOW = 20.0  # [s] simulated, at the end of the run, where tracking is compared
 # [m] how far the respawned run's worst |e_t| over WINDOW may be above the normal run's: the
 # restarted controller's own state (its path progress, the smooth law's filters) starts afresh
