@@ -26,7 +26,6 @@ import sys
 import tempfile
 import time
 import unittest
-import xmlrpc.client
 
 import rosgraph
 import rospy
@@ -34,7 +33,7 @@ import rosunit
 from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import JointState
 
-from spherical_robots_testing import free_port
+from spherical_robots_testing import free_port, pid_of
 
 PKG = 'spherical_robots'
 SOURCE = os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
@@ -84,15 +83,6 @@ def sphere_sim():
     return roslib.packages.find_node(PKG, 'sphere_sim')[0]
 
 
-def pid_of(master, node):
-    """The pid of the process registered as `node`, or None."""
-    try:
-        uri = master.lookupNode(node)
-        return xmlrpc.client.ServerProxy(uri).getPid('/stack_supervision_check')[2]
-    except (rosgraph.MasterError, OSError, xmlrpc.client.Error):
-        return None
-
-
 class StackSupervision(unittest.TestCase):
 
     @classmethod
@@ -121,7 +111,6 @@ class StackSupervision(unittest.TestCase):
                 while not rosgraph.is_master_online(uri) and time.time() < start + 120:
                     time.sleep(0.2)
                 rospy.init_node('stack_supervision_check', disable_signals=True)
-                master = rosgraph.Master('/stack_supervision_check', master_uri=uri)
                 node = '/%s/%s' % (ns, Options.kill)
                 clock = []
                 rospy.Subscriber('/clock', Clock, lambda m: clock.append(m.clock.to_sec()),
@@ -132,12 +121,12 @@ class StackSupervision(unittest.TestCase):
                                  queue_size=10000)
                 while (not clock or clock[-1] < Options.at) and cls.child.poll() is None:
                     time.sleep(0.01)
-                cls.old_pid = pid_of(master, node)
+                cls.old_pid = pid_of(node, uri)
                 os.kill(cls.old_pid, signal.SIGKILL)
                 cls.kill_wall = time.time()
                 cls.kill_sim = clock[-1]
                 while cls.child.poll() is None and Options.respawn and cls.back_wall is None:
-                    pid = pid_of(master, node)
+                    pid = pid_of(node, uri)
                     if pid not in (None, cls.old_pid):
                         cls.new_pid, cls.back_wall = pid, time.time()
                     time.sleep(0.05)
