@@ -271,6 +271,7 @@ DOMAINS = {
     'hardware': Hardware(none_allowed=True),
     'actuator_models': ActuatorModels(),
     'nodelet': BOOLEAN,
+    'respawn': BOOLEAN,
     'wait_for_subscribers': Number(minimum=0, whole=True),
     'odom': Pattern(r'^/?%s(/%s)*$' % (NAME, NAME), 'a topic name, relative or absolute, e.g. odom or /ekf/odom'),
     'origin_x': Number(unit='m'),

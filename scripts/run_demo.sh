@@ -4,7 +4,8 @@
 # plots the run and prints its tracking summary.
 #   Outputs: $SPHERICAL_ROBOTS_RESULTS (default: results/ in the repository)
 #   Wall-clock limit for the stack: $DEMO_TIMEOUT seconds (default 120)
-# Exit status: 0 on success; non-zero if the run failed (no bag, no messages, plot failed).
+# Exit status: 0 on success; non-zero if the run failed (the stack did not end normally, no bag, no
+# messages, plot failed).
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 cd "$SR_ROOT"
@@ -65,18 +66,21 @@ python3 -c 'import rosgraph, sys; sys.exit(not rosgraph.is_master_online())' \
   || { sr_log "roscore did not come up:"; tail -20 "$logs/roscore.log"; exit 1; }
 sr_log "roscore up at $ROS_MASTER_URI (logs: $logs)"
 
-# The stack ends by itself: the plant node is required and shuts down at t = 200 s (sim time).
+# The stack ends by itself: the plant shuts down at t = 200 s (sim time). run_stack.py is
+# roslaunch with an exit status: 0 only if the plant ended the stack (docs/conventions.md, "When a
+# node dies").
 launch_args=(robot:=3R path:=circle model:=paper speedup:=10 duration:=200 rviz:=false "record:=$bag")
-sr_log "roslaunch spherical_robots terrain_stack.launch ${launch_args[*]}  (wall limit ${timeout_s} s)"
+sr_log "rosrun spherical_robots run_stack.py terrain_stack.launch ${launch_args[*]}  (wall limit ${timeout_s} s)"
 launch_start=$SECONDS
-setsid roslaunch spherical_robots terrain_stack.launch "${launch_args[@]}" > "$logs/roslaunch.log" 2>&1 &
+setsid rosrun spherical_robots run_stack.py terrain_stack.launch "${launch_args[@]}" \
+  > "$logs/roslaunch.log" 2>&1 &
 launch_pid=$!
 timed_out=0
 while kill -0 "$launch_pid" 2>/dev/null; do
   if [ $((SECONDS - launch_start)) -ge "$timeout_s" ]; then
     timed_out=1
-    sr_log "TIMEOUT: roslaunch still running after ${timeout_s} s wall; stopping it"
-    stop_group "$launch_pid" roslaunch
+    sr_log "TIMEOUT: the stack still running after ${timeout_s} s wall; stopping it"
+    stop_group "$launch_pid" run_stack.py
     break
   fi
   sleep 0.5
@@ -84,10 +88,11 @@ done
 launch_rc=0
 wait "$launch_pid" || launch_rc=$?
 launch_pid=''
-sr_log "roslaunch exited with status $launch_rc after $((SECONDS - launch_start)) s wall (log: $logs/roslaunch.log)"
+sr_log "run_stack.py exited with status $launch_rc after $((SECONDS - launch_start)) s wall (log: $logs/roslaunch.log)"
 
 failed=0
 [ "$timed_out" -eq 0 ] || failed=1
+[ "$launch_rc" -eq 0 ] || failed=1
 if [ ! -s "$bag" ]; then
   sr_log "FAILED: no bag at $bag$([ -e "$bag.active" ] && echo " (only $bag.active: the recorder did not close it)")"
   tail -25 "$logs/roslaunch.log"
@@ -104,7 +109,7 @@ cleanup
 core_pid=''
 sr_log "total $((SECONDS - total_start)) s"
 if [ "$failed" -ne 0 ]; then
-  sr_log "FAILED: the stack did not end by itself within ${timeout_s} s"
+  sr_log "FAILED: the stack did not end normally within ${timeout_s} s (run_stack.py: $launch_rc)"
   exit 1
 fi
 sr_log "OK"

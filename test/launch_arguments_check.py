@@ -75,6 +75,8 @@ BAD_VALUES = [
 DOMAIN_CASES = [
     ('terrain_stack', ['robot=RS', 'path=diamond', 'model=rolling', 'law=paper'], []),
     ('terrain_stack', ['rviz=True', 'nodelet=0', 'owns_clock=false'], []),
+    ('terrain_stack', ['respawn=true'], []),
+    ('norma_stack', ['respawn=sometimes'], ['respawn']),
     ('terrain_stack', ['rviz=yes', 'ns=1sphere', 'frame_prefix=sphere'],
      ['rviz', 'ns', 'frame_prefix']),
     ('terrain_stack', ['clock=lockstep', 'speedup=0'], []),

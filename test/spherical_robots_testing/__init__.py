@@ -7,17 +7,21 @@ free port and a launch file's path.
 Not installed: it sits beside the test programs, which run from the package's source tree (the
 directory of the running program is on Python's path).
 """
+import contextlib
 import math
 import os
+import signal
 import socket
 import threading
 import time
+import xmlrpc.client
 
+import rosgraph
 import rospkg
 import rospy
 
 __all__ = ['Recorder', 'wait_until', 'sim_sleep', 'GoalClient', 'publish_until', 'first_at_rest',
-           'quaternion_angle', 'free_port', 'launch_file']
+           'quaternion_angle', 'free_port', 'launch_file', 'node_uri', 'pid_of', 'silenced']
 
 PKG = 'spherical_robots'
 
@@ -148,3 +152,36 @@ def launch_file(name):
     colcon workspace inside it (under colcon test) it finds the installed copy too and refuses:
     "multiple files named [terrain_stack.launch]"."""
     return os.path.join(rospkg.RosPack().get_path(PKG), 'launch', name)
+
+
+def node_uri(name, master_uri=None):
+    """The URI the master (this node's, or the one at master_uri) has for node `name`, or None:
+    a node killed and restarted by roslaunch (respawn) comes back under a new one."""
+    try:
+        return rosgraph.Master('/spherical_robots_testing', master_uri=master_uri).lookupNode(name)
+    except (rosgraph.MasterError, OSError):
+        return None
+
+
+def pid_of(name, master_uri=None):
+    """The pid of the process registered as node `name` (on this machine), or None."""
+    uri = node_uri(name, master_uri)
+    try:
+        return uri and xmlrpc.client.ServerProxy(uri).getPid('/spherical_robots_testing')[2]
+    except (OSError, xmlrpc.client.Error):
+        return None
+
+
+@contextlib.contextmanager
+def silenced(name):
+    """Node `name` stopped (SIGSTOP) for the block, continued (SIGCONT) after it: a participant
+    that goes silent without dying, which neither ends the stack nor is restarted (a death ends
+    it, or with respawn:=true roslaunch restarts it: docs/conventions.md, "When a node dies")."""
+    pid = pid_of(name)
+    if pid is None:
+        raise AssertionError('no process for node %s' % name)
+    os.kill(pid, signal.SIGSTOP)
+    try:
+        yield pid
+    finally:
+        os.kill(pid, signal.SIGCONT)

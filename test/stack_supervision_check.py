@@ -1,0 +1,214 @@
+#!/usr/bin/env python3
+"""A stack under scripts/run_stack.py, on a master of its own, with two busy loops beside it: how
+it ends (docs/conventions.md, "When a node dies").
+
+    stack_supervision_check.py --stack terrain                       # a normal end
+    stack_supervision_check.py --stack terrain --kill pure_pursuit_controller [--respawn]
+
+* A normal end: exit status 0, and no "REQUIRED process [...] has died" on the output.
+* --kill NODE (kill -9 at --at simulated seconds), respawn:=false: exit status 1 within
+  FAILURE_BOUND of wall time of the kill, naming the node and the signal.
+* --kill NODE --respawn: the node is back (a new process registered under its name), the run
+  reaches its duration, exit status 0, no "REQUIRED", and |e_t| over the last WINDOW seconds is
+  within the normal run's: the batch run of the same scenario (sphere_sim --loop sampled, what
+  the stack in lock-step publishes when nothing dies, docs/lockstep.md) plus TRACKING_SLACK.
+It prints what it measured: the wall time from the kill to the end or to the node's return, and
+the simulated time without the node's commands (the steps lost).
+
+As a rostest node (test/stack_supervision_*.test) its arguments are the <test>'s args.
+"""
+import argparse
+import csv
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+
+import rosgraph
+import rospy
+import rosunit
+from rosgraph_msgs.msg import Clock
+from sensor_msgs.msg import JointState
+
+from spherical_robots_testing import free_port, pid_of
+
+PKG = 'spherical_robots'
+SOURCE = os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
+RUN_STACK = os.path.join(SOURCE, 'scripts', 'run_stack.py')
+# [s] of wall time from a kill to run_stack.py's exit with respawn:=false: roslaunch's process
+# monitor and run_stack.py's queue notice the death (0.1 s polls each; a stack of processes has no
+# SETTLE), then roslaunch shuts the other processes down (SIGINT, SIGTERM after 15 s), plus 5 s for
+# a busy machine.
+FAILURE_BOUND = 0.2 + 15.0 + 5.0
+WINDOW = 20.0  # [s] simulated, at the end of the run, where tracking is compared
+# [m] how far the respawned run's worst |e_t| over WINDOW may be above the normal run's: the
+# restarted controller's own state (its path progress, the smooth law's filters) starts afresh
+# after a gap, and must have converged back onto the normal run's orbit.
+TRACKING_SLACK = 1e-3
+
+# Per stack: its namespace and the batch run of its normal scenario (sphere_sim subcommand and
+# options, the CSV column of |e|).
+STACKS = {
+    'terrain': ('sphere', ['terrain', '--loop', 'sampled', '--stack', 'terrain', '--robot', '3R',
+                           '--path', 'circle', '--law', 'smooth', '--model', 'paper'], 'e_norm'),
+    'roller': ('roller', ['terrain', '--loop', 'sampled', '--stack', 'roller', '--robot', '2R',
+                          '--path', 'circle', '--law', 'smooth', '--model', 'rolling'], 'e_norm'),
+    'norma': ('norma', ['norma', '--loop', 'sampled', '--controller', 'tracking'], 'err'),
+}
+# The topic each node's work shows on (sensor_msgs/JointState): its gap after a kill is the
+# simulated time without it.
+WORK = {'pure_pursuit_controller': 'actuators/command', 'norma_controller': 'actuators/command',
+        'hardware_interface': 'actuators/state', 'roller/pure_pursuit_controller': 'drive/command'}
+
+
+class Options:
+    stack, kill, respawn, at, duration, args = 'terrain', None, False, 30.0, 120.0, []
+
+
+def run_batch(duration):
+    _, command, column = STACKS[Options.stack]
+    out = os.path.join(tempfile.mkdtemp(), 'batch.csv')
+    subprocess.run([sphere_sim()] + command + ['--duration', '%g' % duration, '--log-rate', '50',
+                                               '--config', SOURCE, '--out', out],
+                   check=True, stdout=subprocess.DEVNULL)
+    with open(out) as f:
+        return [(float(r['t']), float(r[column])) for r in csv.DictReader(f)]
+
+
+def sphere_sim():
+    import roslib.packages
+    return roslib.packages.find_node(PKG, 'sphere_sim')[0]
+
+
+class StackSupervision(unittest.TestCase):
+
+    @classmethod
+    def setUpClass(cls):
+        ns = STACKS[Options.stack][0]
+        port = free_port()
+        uri = 'http://localhost:%d' % port
+        cls.home = tempfile.mkdtemp(prefix='stack_supervision_')
+        env = dict(os.environ, ROS_MASTER_URI=uri, ROS_HOME=cls.home)
+        cls.busy = [subprocess.Popen(['yes'], stdout=subprocess.DEVNULL) for _ in range(2)]
+        cls.log_path = os.path.join(cls.home, 'run_stack.log')
+        log = open(cls.log_path, 'w')
+        command = [RUN_STACK, '%s_stack.launch' % Options.stack,
+                   'duration:=%g' % Options.duration,
+                   'respawn:=%s' % ('true' if Options.respawn else 'false')] + Options.args
+        if Options.kill and Options.respawn:
+            command.append('record:=' + os.path.join(cls.home, 'run.bag'))
+        start = time.time()
+        cls.child = subprocess.Popen(command, env=env, stdout=log, stderr=subprocess.STDOUT,
+                                     start_new_session=True)
+        cls.kill_wall = cls.back_wall = cls.old_pid = cls.new_pid = None
+        cls.work = []
+        try:
+            if Options.kill:
+                os.environ['ROS_MASTER_URI'] = uri
+                while not rosgraph.is_master_online(uri) and time.time() < start + 120:
+                    time.sleep(0.2)
+                rospy.init_node('stack_supervision_check', disable_signals=True)
+                node = '/%s/%s' % (ns, Options.kill)
+                clock = []
+                rospy.Subscriber('/clock', Clock, lambda m: clock.append(m.clock.to_sec()),
+                                 queue_size=1)
+                work = WORK.get('%s/%s' % (Options.stack, Options.kill), WORK[Options.kill])
+                rospy.Subscriber('/%s/%s' % (ns, work), JointState,
+                                 lambda m: cls.work.append((time.time(), m.header.stamp.to_sec())),
+                                 queue_size=10000)
+                while (not clock or clock[-1] < Options.at) and cls.child.poll() is None:
+                    time.sleep(0.01)
+                cls.old_pid = pid_of(node, uri)
+                os.kill(cls.old_pid, signal.SIGKILL)
+                cls.kill_wall = time.time()
+                cls.kill_sim = clock[-1]
+                while cls.child.poll() is None and Options.respawn and cls.back_wall is None:
+                    pid = pid_of(node, uri)
+                    if pid not in (None, cls.old_pid):
+                        cls.new_pid, cls.back_wall = pid, time.time()
+                    time.sleep(0.05)
+            cls.status = cls.child.wait(timeout=60 + 2 * Options.duration)
+            cls.end_wall = time.time()
+        finally:
+            if cls.child.poll() is None:
+                os.killpg(cls.child.pid, signal.SIGKILL)
+            for b in cls.busy:
+                b.kill()
+                b.wait()
+            log.close()
+        with open(cls.log_path) as f:
+            cls.output = f.read()
+
+    def report(self, what):
+        sys.__stderr__.write("stack_supervision_check (%s): %s\n" % (Options.stack, what))
+
+    def assertStatus(self, status):
+        self.assertEqual(self.status, status, 'run_stack.py exited with %s; its output %s ends:\n%s'
+                         % (self.status, self.log_path, self.output[-3000:]))
+
+    def test_end(self):
+        if Options.kill and not Options.respawn:
+            self.assertStatus(1)
+            self.assertIn('%s killed by signal 9' % Options.kill, self.output)
+            took = self.end_wall - self.kill_wall
+            self.report('kill -9 %s at %.1f s simulated: the stack ended, status 1, %.1f s of '
+                        'wall time later' % (Options.kill, self.kill_sim, took))
+            self.assertLess(took, FAILURE_BOUND)
+        else:
+            self.assertStatus(0)
+            self.assertIn('the plant ended the stack normally', self.output)
+        self.assertNotIn('REQUIRED process', self.output)
+
+    def test_respawned_node_tracks_as_the_normal_run(self):
+        if not (Options.kill and Options.respawn):
+            self.skipTest('for --kill with --respawn')
+        self.assertIsNotNone(self.new_pid, '%s did not come back' % Options.kill)
+        # The largest gap between the stamps of its messages: the simulated time the loop ran
+        # without it.
+        stamps = [stamp for _, stamp in self.work]
+        gap, since = max((b - a, a) for a, b in zip(stamps, stamps[1:]) if a >= self.kill_sim - 1)
+        first_back = next(wall for wall, stamp in self.work if stamp > since)
+        self.report('kill -9 %s at %.1f s simulated: back as pid %d after %.1f s of wall time, '
+                    'publishing again after %.1f s; %.3f s of simulated time without its '
+                    'messages from %.3f s' % (Options.kill, self.kill_sim, self.new_pid,
+                                             self.back_wall - self.kill_wall,
+                                             first_back - self.kill_wall, gap, since))
+        errors = self.errors_at_end()
+        normal = [e for t, e in run_batch(Options.duration) if t >= Options.duration - WINDOW]
+        self.report('|e_t| over the last %g s: respawned run max %.6g m (%d samples), normal run '
+                    'max %.6g m' % (WINDOW, max(errors), len(errors), max(normal)))
+        self.assertGreater(len(errors), 0.9 * WINDOW * 50)
+        self.assertLessEqual(max(errors), max(normal) + TRACKING_SLACK)
+
+    @classmethod
+    def errors_at_end(cls):
+        import rosbag
+        bag = os.path.join(cls.home, 'run.bag')
+        with rosbag.Bag(bag) as b:
+            return [m.error_norm for _, m, _ in b.read_messages(topics=[
+                '/%s/tracking_error' % STACKS[Options.stack][0]])
+                    if m.header.stamp.to_sec() >= Options.duration - WINDOW]
+
+
+def main(argv):
+    parser = argparse.ArgumentParser()
+    parser.add_argument('--stack', default='terrain', choices=sorted(STACKS))
+    parser.add_argument('--kill', help='a node of the loop, relative to the stack namespace')
+    parser.add_argument('--respawn', action='store_true')
+    parser.add_argument('--at', type=float, default=30.0, help='[s] simulated')
+    parser.add_argument('--duration', type=float, default=120.0, help='[s] simulated')
+    parser.add_argument('args', nargs='*', help='launch arguments NAME:=VALUE')
+    # rostest adds where rosunit writes its results
+    parsed = parser.parse_args([a for a in rospy.myargv(argv)[1:]
+                                if not a.startswith('--gtest_output=')])
+    Options.stack, Options.kill, Options.respawn = parsed.stack, parsed.kill, parsed.respawn
+    Options.at, Options.duration = parsed.at, parsed.duration
+    Options.args = parsed.args
+    rosunit.unitrun(PKG, 'stack_supervision_%s' % Options.stack, StackSupervision)
+
+
+if __name__ == '__main__':
+    main(sys.argv)
