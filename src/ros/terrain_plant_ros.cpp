@@ -74,7 +74,7 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
                                            << terrain::toString(model) << " contact model, on "
                                            << surface_->describe() << "; frames " << base_frame_
                                            << ", " << heading_frame_);
-  loop_.start(*this, state_pub_);
+  loop_.start(*this, state_pub_, loop_.publishRate());
 }
 
 void TerrainPlantRos::read(const sensor_msgs::JointState& actuators) {
