@@ -54,7 +54,7 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
       command_input_(nh.resolveName("actuators/command"), actuators_.commandTimeout()),
       clock_(parameters_.max_clock_step),
       state_rate_(nh.resolveName("actuators/state"), parameters_.rate,
-                  loadRateTolerance(RosParameterSource(pnh))),
+                  loadRateTolerance(RosParameterSource(pnh)), [this] { return now(); }),
       updater_(nh, pnh, pnh.getNamespace()) {
   const double rate = parameters_.rate;
   updater_.setHardwareID("simulated");

@@ -25,7 +25,8 @@ PlantLoop::PlantLoop(ros::NodeHandle nh, ros::NodeHandle pnh, const Defaults& de
 void PlantLoop::start(PlantModel& model, const LoopPublisher& state, double state_rate) {
   model_ = &model;
   state_topic_ = state.topic();
-  state_rate_ = std::make_unique<TopicRate>(state_topic_, state_rate, rate_tolerance_);
+  state_rate_ = std::make_unique<TopicRate>(state_topic_, state_rate, rate_tolerance_,
+                                            [this] { return clock_->now(); });
   actuator_sub_ = nh_.subscribe("actuators/state", kLoopQueueSize, &PlantLoop::onActuatorState, this);
   clock_ = makePlantClock(nh_, pnh_, parameters_,
                           [this](const ros::Time& now) { return tick(now); }, state.publisher(),

@@ -63,7 +63,7 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
       input_(nh.resolveName(parameters_.mode == Mode::Tracking ? "terrain_state" : "cmd_vel"),
              parameters_.input_timeout),
       command_rate_(nh.resolveName("actuators/command"), parameters_.rate,
-                    loadRateTolerance(RosParameterSource(pnh))),
+                    loadRateTolerance(RosParameterSource(pnh)), [this] { return now(); }),
       updater_(nh, pnh, pnh.getNamespace()) {
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
   controller_ = config::makePursuitController(parameters_.law, parameters_.robot_type,

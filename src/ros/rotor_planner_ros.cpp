@@ -32,7 +32,9 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       executive_(params_.executive),
       odom_input_(nh.resolveName("odom"), params_.odom_timeout),
       command_rate_(nh.resolveName("actuators/command"), 1.0 / params_.executive.command_period,
-                    loadRateTolerance(RosParameterSource(pnh)), [this] { return executive_.busy(); }),
+                    loadRateTolerance(RosParameterSource(pnh)),
+                    [this] { return workingTime(lockstep_.get()); },
+                    [this] { return executive_.busy(); }),
       updater_(nh, pnh, pnh.getNamespace()),
       driven_(nh, "driven_path", params_.frame_id, params_.path_period, kMaxDrivenPoses, true),
       // Every goal waits for a step, where it is planned; on a timer the step must run.
