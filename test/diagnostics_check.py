@@ -2,19 +2,21 @@
 """rostest of a stack's diagnostics (test/diagnostics_*.test), in the stack's namespace.
 
 ~groups: the aggregator's groups ({group: level name}) the stack's diagnostics_agg must reach,
-e.g. {plant: OK, controller: OK, hardware: OK}, or with hardware:=none {hardware: ERROR}.
+e.g. {plant: OK, controller: OK, hardware: OK}, or with hardware:=none {hardware: STALE}.
+~kill: a node of the stack (relative name) killed once one of its rates was measured OK.
 ~rates: the topics whose rate statuses are checked ([] none); each is counted here, by the
 header stamps of its messages, over the window the status says it measured, and the rate the
 status reports must be that count's (an independent truth), within the configured tolerance of
 its target, at OK.
 """
 import functools
-import threading
 import unittest
 
+import rosnode
 import rospy
 import rostest
 from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
+from nav_msgs.msg import Odometry
 from sensor_msgs.msg import JointState
 
 from spherical_robots.msg import TerrainState
@@ -25,7 +27,7 @@ NAME = 'diagnostics_check'
 WALL_DEADLINE = 120.0
 LEVELS = {'OK': DiagnosticStatus.OK, 'WARN': DiagnosticStatus.WARN,
           'ERROR': DiagnosticStatus.ERROR, 'STALE': DiagnosticStatus.STALE}
-TYPES = {'terrain_state': TerrainState, 'actuators/command': JointState,
+TYPES = {'terrain_state': TerrainState, 'odom': Odometry, 'actuators/command': JointState,
          'actuators/state': JointState}
 # An event stamped at the window's start or at its end may fall either side of it in seconds.
 EDGE_EVENTS = 2
@@ -37,21 +39,9 @@ def value(status, key):
     return next((kv.value for kv in status.values if kv.key == key), None)
 
 
-class StampCounter:
-    """The header stamps [s] of every message on a topic."""
-
-    def __init__(self, topic, msg_type):
-        self.lock = threading.Lock()
-        self.stamps = []
-        self.subscriber = rospy.Subscriber(topic, msg_type, self.callback, queue_size=10000)
-
-    def callback(self, msg):
-        with self.lock:
-            self.stamps.append(msg.header.stamp.to_sec())
-
-    def between(self, start, end):
-        with self.lock:
-            return sum(1 for t in self.stamps if start < t <= end)
+def stamps_between(recorder, start, end):
+    """How many of the recorded messages are stamped in (start, end] [s]."""
+    return sum(1 for msg in recorder.since(0) if start < msg.header.stamp.to_sec() <= end)
 
 
 class DiagnosticsCheck(unittest.TestCase):
@@ -60,10 +50,21 @@ class DiagnosticsCheck(unittest.TestCase):
         rospy.init_node(NAME)
         cls.groups = rospy.get_param('~groups')
         cls.rates = rospy.get_param('~rates', [])
-        cls.counters = {topic: StampCounter(rospy.resolve_name(topic), TYPES[topic])
+        cls.counters = {topic: testing.Recorder(rospy.resolve_name(topic), TYPES[topic])
                         for topic in cls.rates}
         cls.aggregated = testing.Recorder('diagnostics_agg', DiagnosticArray)
         cls.raw = testing.Recorder('/diagnostics', DiagnosticArray)
+        victim = rospy.get_param('~kill', '')
+        if victim:
+            node = rospy.resolve_name(victim)
+            status = node.lstrip('/') + ':'
+            # Once the loop runs: a rate measured at OK.
+            wait_until(lambda: any(s.name.startswith(status) and s.level == DiagnosticStatus.OK
+                                   and value(s, 'Actual frequency (Hz)')
+                                   for msg in cls.raw.since(0) for s in msg.status),
+                       'a rate of ' + node + ' measured at OK')
+            rospy.loginfo('killing %s', node)
+            rosnode.kill_nodes([node])
 
     def latest_groups(self):
         msg = self.aggregated.last()
@@ -114,7 +115,7 @@ class DiagnosticsCheck(unittest.TestCase):
             reported = float(value(status, 'Actual frequency (Hz)'))
             target = float(value(status, 'Target frequency (Hz)'))
             lowest = float(value(status, 'Minimum acceptable frequency (Hz)'))
-            counted = self.counters[topic].between(end - window, end)
+            counted = stamps_between(self.counters[topic], end - window, end)
             rospy.loginfo('%s: reported %.3f Hz over %.2f s of ROS time, counted %d messages '
                           '(%.3f Hz), target %.3f Hz', topic, reported, window, counted,
                           counted / window, target)
