@@ -47,7 +47,8 @@ TopicRate::TopicRate(const std::string& topic, double rate, double tolerance, Cl
 
 void TopicRate::run(diagnostic_updater::DiagnosticStatusWrapper& status) {
   const ros::Time now = clock_();
-  const PublicationRate::Report report = rate_.report(nanosecondsOf(now), !expected_ || expected_());
+  const PublicationRate::Report report =
+      rate_.report(nanosecondsOf(now), !expected_ || expected_());
   status.summary(statusLevel(report.level), report.message);
   // FrequencyStatus's keys, which tools and people know.
   status.add("Events in window", report.events);

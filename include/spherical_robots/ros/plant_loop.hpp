@@ -77,9 +77,9 @@ class PlantLoop {
   /// [Hz] of publishPeriodic (~publish_rate).
   double publishRate() const { return parameters_.publish_rate; }
   /// Subscribes actuators/state (relative to the node handle), adds the model's diagnostics and
-  /// starts the clock; `state` is the topic whose subscribers time waits for (wait_for_subscribers),
-  /// published at `state_rate` [Hz] (1 / step() from publishEveryStep, publishRate() from
-  /// publishPeriodic), which /diagnostics checks (topic_rate.hpp).
+  /// starts the clock; `state` is the topic whose subscribers time waits for
+  /// (wait_for_subscribers), published at `state_rate` [Hz] (1 / step() from publishEveryStep,
+  /// publishRate() from publishPeriodic), which /diagnostics checks (topic_rate.hpp).
   void start(PlantModel& model, const LoopPublisher& state, double state_rate);
 
  private:
