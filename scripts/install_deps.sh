@@ -31,6 +31,8 @@ packages=(
   python3-std-msgs python3-std-srvs python3-tf2-ros python3-tf2-msgs python3-visualization-msgs
   python3-diagnostic-updater python3-interactive-markers python3-actionlib python3-actionlib-msgs
   ros-robot-state-publisher rviz xvfb xauth x11-utils imagemagick
+  # each stack's diagnostic aggregator: aggregator_node (tools) and its analyzer plugins (dev)
+  libdiagnostic-aggregator-tools libdiagnostic-aggregator-dev
   python3-numpy python3-matplotlib
   # derivations/derive_norma_dynamics.py
   python3-sympy

@@ -53,7 +53,7 @@ FreebotPlantRos::FreebotPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   ROS_INFO_STREAM("FreeBOT chain: " << chain().moduleCount() << " modules, radii [" << radii.str()
                                     << "] m, reach " << chain().manipulator().reach()
                                     << " m; step " << loop_.step() << " s");
-  loop_.start(*this, state_pub_);
+  loop_.start(*this, state_pub_, 1.0 / loop_.step());  // every step
 }
 
 void FreebotPlantRos::read(const sensor_msgs::JointState& actuators) {

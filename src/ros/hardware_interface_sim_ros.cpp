@@ -53,10 +53,13 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
       actuators_(config::makeSimulatedActuators(parameters_)),
       command_input_(nh.resolveName("actuators/command"), actuators_.commandTimeout()),
       clock_(parameters_.max_clock_step),
+      state_rate_(nh.resolveName("actuators/state"), parameters_.rate,
+                  loadRateTolerance(RosParameterSource(pnh)), [this] { return now(); }),
       updater_(nh, pnh, pnh.getNamespace()) {
   const double rate = parameters_.rate;
   updater_.setHardwareID("simulated");
   updater_.add("actuators", this, &HardwareInterfaceSimRos::diagnose);
+  state_rate_.addTo(updater_);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
 
   state_pub_ = nh.advertise<sensor_msgs::JointState>("actuators/state", kLoopQueueSize);
@@ -221,6 +224,7 @@ void HardwareInterfaceSimRos::publishState(const ros::Time& stamp) {
   state_pub_.publish(shared(conversions::jointState(
       actuators_.names(), actuators_.measuredPositions(), actuators_.measuredVelocities(),
       actuators_.efforts(), stamp)));
+  state_rate_.tick();
 }
 
 void HardwareInterfaceSimRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

@@ -58,7 +58,7 @@ NormaPlantRos::NormaPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
                                 << p.m_shell << ", shaft " << p.m_shaft << ", pendulum "
                                 << p.m_pendulum << ", slider " << p.m_slider << " kg; step "
                                 << loop_.step() << " s");
-  loop_.start(*this, odometry_->odom());
+  loop_.start(*this, odometry_->odom(), 1.0 / loop_.step());  // every step
 }
 
 void NormaPlantRos::read(const sensor_msgs::JointState& actuators) {

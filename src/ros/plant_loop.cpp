@@ -1,5 +1,6 @@
 #include "spherical_robots/ros/plant_loop.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
@@ -15,6 +16,7 @@ PlantLoop::PlantLoop(ros::NodeHandle nh, ros::NodeHandle pnh, const Defaults& de
       timeline_(parameters_.duration, parameters_.max_clock_step),
       actuator_input_(nh.resolveName("actuators/state"), parameters_.state_timeout),
       tf_(step_publications_),
+      rate_tolerance_(loadRateTolerance(RosParameterSource(pnh))),
       updater_(nh, pnh, pnh.getNamespace()) {
   if (defaults.root_frame.empty() || defaults.root_frame == kMapFrame)
     throw std::invalid_argument("a plant's root frame must be a frame of its own under " + kMapFrame +
@@ -27,14 +29,18 @@ PlantLoop::PlantLoop(ros::NodeHandle nh, ros::NodeHandle pnh, const Defaults& de
     trail_.emplace(nh, "trail", defaults.root_frame, parameters_.trail_period, defaults.max_trail_points);
 }
 
-void PlantLoop::start(PlantModel& model, const LoopPublisher& state) {
+void PlantLoop::start(PlantModel& model, const LoopPublisher& state, double state_rate) {
   model_ = &model;
+  state_topic_ = state.topic();
+  state_rate_ = std::make_unique<TopicRate>(state_topic_, state_rate, rate_tolerance_,
+                                            [this] { return clock_->now(); });
   actuator_sub_ = nh_.subscribe("actuators/state", kLoopQueueSize, &PlantLoop::onActuatorState, this);
   clock_ = makePlantClock(nh_, pnh_, parameters_,
                           [this](const ros::Time& now) { return tick(now); }, state.publisher(),
                           actuator_sub_);
   updater_.setHardwareID(defaults_.hardware_id);
   updater_.add(defaults_.task, this, &PlantLoop::diagnose);
+  state_rate_->addTo(updater_);
   diagnostics_timer_ = startDiagnostics(nh_, updater_);
 }
 
@@ -68,7 +74,10 @@ std::vector<std::string> PlantLoop::tick(const ros::Time& now) {
                                                << model_->describeState());
     clock_->finish();
   }
-  return step_publications_.take();
+  std::vector<std::string> published = step_publications_.take();
+  if (std::find(published.begin(), published.end(), state_topic_) != published.end())
+    state_rate_->tick();
+  return published;
 }
 
 void PlantLoop::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {

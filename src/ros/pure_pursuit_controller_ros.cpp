@@ -64,6 +64,8 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
       input_(nh.resolveName(parameters_.mode == Mode::Tracking ? "odom" : "cmd_vel"),
              parameters_.input_timeout),
       tilt_input_(nh.resolveName("joint_states"), parameters_.input_timeout),
+      command_rate_(nh.resolveName("actuators/command"), parameters_.rate,
+                    loadRateTolerance(RosParameterSource(pnh)), [this] { return now(); }),
       updater_(nh, pnh, pnh.getNamespace()) {
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
   controller_ = config::makePursuitController(parameters_.law, parameters_.robot_type,
@@ -120,6 +122,7 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
 
   updater_.setHardwareID(terrain::toString(parameters_.robot_type) + " sphere");
   updater_.add("pure pursuit controller", this, &PurePursuitControllerRos::diagnose);
+  command_rate_.addTo(updater_);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
   const double period = 1.0 / parameters_.rate;
   if (isLockstepParticipant(nh, pnh)) {
@@ -316,6 +319,7 @@ std::vector<std::string> PurePursuitControllerRos::control(const ros::Time& now)
                                                                 << e.what());
   }
   command_pub_.publish(conversions::jointStateFromRates(parameters_.robot_type, command_, now));
+  command_rate_.tick();
   return step_publications_.take();
 }
 

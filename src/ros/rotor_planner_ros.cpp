@@ -31,6 +31,10 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       radius_(params_.executive.radius),
       executive_(params_.executive),
       odom_input_(nh.resolveName("odom"), params_.odom_timeout),
+      command_rate_(nh.resolveName("actuators/command"), 1.0 / params_.executive.command_period,
+                    loadRateTolerance(RosParameterSource(pnh)),
+                    [this] { return workingTime(lockstep_.get()); },
+                    [this] { return executive_.busy(); }),
       updater_(nh, pnh, pnh.getNamespace()),
       driven_(nh, "driven_path", params_.frame_id, params_.path_period, kMaxDrivenPoses, true),
       // Every goal waits for a step, where it is planned; on a timer the step must run.
@@ -63,6 +67,7 @@ RotorPlannerRos::RotorPlannerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   diagnostics_timer_ = startDiagnostics(nh, updater_);
   updater_.setHardwareID("rotor sphere");
   updater_.add("rotor planner", this, &RotorPlannerRos::diagnose);
+  command_rate_.addTo(updater_);
   ROS_INFO_STREAM("rotor_planner: R = " << radius_ << " m, circle radii up to "
                                         << params_.max_radius << " m; service "
                                         << service_.getService() << ", action "
@@ -265,6 +270,7 @@ void RotorPlannerRos::command(const ros::Time& now) {
   if (out.set_point) {
     command_pub_.publish(
         conversions::velocityJointState(kRotors, {out.set_point->phi1, out.set_point->phi2}, now));
+    command_rate_.tick();
   }
   if (out.ended) {
     driven_.publish();

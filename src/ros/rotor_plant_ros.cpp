@@ -50,7 +50,7 @@ RotorPlantRos::RotorPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   joint_pub_ = loop_.advertise<sensor_msgs::JointState>("joint_states");
   ROS_INFO_STREAM("rotor sphere: R = " << parameters_.sphere_radius << " m, k = " << parameters_.inertia_ratio << ", J_zz/J_r = "
                                        << parameters_.rotor_inertia_scale << "; step " << loop_.step() << " s");
-  loop_.start(*this, odometry_->odom());
+  loop_.start(*this, odometry_->odom(), loop_.publishRate());
 }
 
 void RotorPlantRos::read(const sensor_msgs::JointState& actuators) {

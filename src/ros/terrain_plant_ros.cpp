@@ -81,7 +81,7 @@ TerrainPlantRos::TerrainPlantRos(ros::NodeHandle nh, ros::NodeHandle pnh)
                                            << terrain::toString(model) << " contact model, on "
                                            << surface_->describe() << "; frames " << odom_frame_ << " -> "
                                            << base_frame_ << " -> " << shell_frame_ << ", " << heading_frame_);
-  loop_.start(*this, odometry_->odom());
+  loop_.start(*this, odometry_->odom(), loop_.publishRate());
 }
 
 void TerrainPlantRos::read(const sensor_msgs::JointState& actuators) {

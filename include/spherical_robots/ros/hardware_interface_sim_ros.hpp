@@ -16,6 +16,7 @@
 #include "spherical_robots/core/clock_jump.hpp"
 #include "spherical_robots/hardware/simulated_actuators.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/topic_rate.hpp"
 
 #include "spherical_robots/ros/lockstep_participant.hpp"
 #include "spherical_robots/ros/timer_jump_guard.hpp"
@@ -59,6 +60,7 @@ class HardwareInterfaceSimRos {
   /// Counts accepted and rejected commands and logs rejections; the watchdog is the actuators'.
   InputMonitor command_input_;
   ClockJumpDetector clock_;
+  TopicRate state_rate_;  ///< actuators/state against ~rate
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
   bool reported_timeout_ = false;

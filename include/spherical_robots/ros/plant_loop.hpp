@@ -21,6 +21,7 @@
 #include "spherical_robots/ros/loop_publishers.hpp"
 #include "spherical_robots/ros/plant_clock.hpp"
 #include "spherical_robots/ros/plant_timeline.hpp"
+#include "spherical_robots/ros/topic_rate.hpp"
 #include "spherical_robots/ros/trail.hpp"
 
 namespace spherical_robots {
@@ -79,9 +80,13 @@ class PlantLoop {
   const TfPublisher& tf() const { return tf_; }
   const std::string& rootFrame() const { return defaults_.root_frame; }
   double step() const { return parameters_.step; }
+  /// [Hz] of publishPeriodic (~publish_rate).
+  double publishRate() const { return parameters_.publish_rate; }
   /// Subscribes actuators/state (relative to the node handle), adds the model's diagnostics and
-  /// starts the clock; `state` is the topic whose subscribers time waits for (wait_for_subscribers).
-  void start(PlantModel& model, const LoopPublisher& state);
+  /// starts the clock; `state` is the topic whose subscribers time waits for
+  /// (wait_for_subscribers), published at `state_rate` [Hz] (1 / step() from publishEveryStep,
+  /// publishRate() from publishPeriodic), which /diagnostics checks (topic_rate.hpp).
+  void start(PlantModel& model, const LoopPublisher& state, double state_rate);
 
  private:
   void onActuatorState(const sensor_msgs::JointState& msg);
@@ -99,6 +104,9 @@ class PlantLoop {
   tf2_ros::StaticTransformBroadcaster static_tf_;  ///< map -> the root frame
   std::optional<Trail> trail_;
   ros::Time last_publish_;
+  double rate_tolerance_;
+  std::string state_topic_;
+  std::unique_ptr<TopicRate> state_rate_;
   PlantModel* model_ = nullptr;
   ros::Subscriber actuator_sub_;
   diagnostic_updater::Updater updater_;

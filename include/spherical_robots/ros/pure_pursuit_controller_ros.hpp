@@ -21,6 +21,7 @@
 #include "spherical_robots/core/clock_jump.hpp"
 #include "spherical_robots/core/input_health.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/topic_rate.hpp"
 #include "spherical_robots/terrain/body_frame.hpp"
 #include "spherical_robots/terrain/path_tracker.hpp"
 #include "spherical_robots/terrain/pursuit_law.hpp"
@@ -158,6 +159,7 @@ class PurePursuitControllerRos {
   LoopPublisher error_pub_;
   LoopPublisher target_pub_;
   ros::Publisher desired_path_pub_;
+  TopicRate command_rate_;  ///< actuators/command against ~rate
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
   ros::Timer timer_;

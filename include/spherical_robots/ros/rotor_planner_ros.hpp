@@ -14,6 +14,7 @@
 #include "spherical_robots/ExecuteRotorManoeuvreAction.h"
 #include "spherical_robots/PlanRotorMotion.h"
 #include "spherical_robots/ros/input_monitor.hpp"
+#include "spherical_robots/ros/topic_rate.hpp"
 #include "spherical_robots/ros/lockstep_participant.hpp"
 #include "spherical_robots/ros/loop_publishers.hpp"
 #include "spherical_robots/ros/rotor_planner_parameters.hpp"
@@ -69,6 +70,8 @@ class RotorPlannerRos {
   ros::Publisher marker_pub_;
   InputMonitor odom_input_;
   std::string last_problem_;
+  /// actuators/command against ~command_rate, while a manoeuvre runs
+  TopicRate command_rate_;
   diagnostic_updater::Updater updater_;
   ros::Subscriber odom_sub_;
   StepPublications step_publications_;
