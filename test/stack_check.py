@@ -34,7 +34,7 @@ from spherical_robots_testing import Recorder, first_at_rest
 PKG = 'spherical_robots'
 NAME = 'stack_check'
 WALL_DEADLINE = 120.0          # [s] wall, for anything the stack should do in time
-CMD_VEL_TIMEOUT = 0.5          # [s] wall: pure_pursuit_controller ~input_timeout in teleop
+CMD_VEL_TIMEOUT = 0.5          # [s] wall: pure_pursuit_controller ~cmd_vel_timeout in teleop
 SETTLE = (40.0, 60.0)          # [s] simulated window in which tracking has converged
 SLACK = 0.5                    # [s] simulated: message latency at 10x real time (50 ms of wall)
 PLANT_STATUS = 'terrain_plant: terrain plant'

@@ -48,7 +48,11 @@ PurePursuitControllerParameters loadPurePursuitControllerParameters(
   p.path_tf_timeout = config::positiveNumber(node, "path_tf_timeout", p.path_tf_timeout);
   p.odom_frame = node.text("odom_frame").value_or(p.odom_frame);
   p.rate = config::positiveNumber(node, "rate", p.rate);
-  p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);
+  // One name (input_timeout) timed both up to 0.2.0: for one release it still sets both.
+  p.state_timeout = config::renamedNumber(node, {"state_timeout", "input_timeout"},
+                                          p.state_timeout, config::positiveNumber);
+  p.cmd_vel_timeout = config::renamedNumber(node, {"cmd_vel_timeout", "input_timeout"},
+                                            p.cmd_vel_timeout, config::positiveNumber);
   p.max_position = config::positiveNumber(node, "max_position", p.max_position);
   p.max_cmd_vel = config::positiveNumber(node, "max_cmd_vel", p.max_cmd_vel);
   p.max_stamp_skew = config::positiveNumber(node, "max_stamp_skew", p.max_stamp_skew);
@@ -62,8 +66,9 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
       radius_(radiusFromRobotDescription(nh)),
       clock_(parameters_.max_clock_step),
       input_(nh.resolveName(parameters_.mode == Mode::Tracking ? "odom" : "cmd_vel"),
-             parameters_.input_timeout),
-      tilt_input_(nh.resolveName("joint_states"), parameters_.input_timeout),
+             parameters_.mode == Mode::Tracking ? parameters_.state_timeout
+                                                : parameters_.cmd_vel_timeout),
+      tilt_input_(nh.resolveName("joint_states"), parameters_.state_timeout),
       updater_(nh, pnh, pnh.getNamespace()) {
   const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
   controller_ = config::makePursuitController(parameters_.law, parameters_.robot_type,
@@ -334,7 +339,7 @@ terrain::DriveRates PurePursuitControllerRos::teleop() {
   // A person's command timeout counts wall time: at 10x real time, cmd_vel at 10 Hz of wall time
   // would otherwise be 1 s of simulated time apart, twice the timeout.
   if (last_cmd_vel_wall_.isZero() ||
-      (ros::WallTime::now() - last_cmd_vel_wall_).toSec() > parameters_.input_timeout)
+      (ros::WallTime::now() - last_cmd_vel_wall_).toSec() > parameters_.cmd_vel_timeout)
     return {};
   const terrain::TeleopCommand command = teleop_mapping_->command(request_, tilt_);
   // Named as cmd_vel fields, which is what the operator sends.

@@ -56,8 +56,10 @@ struct PurePursuitControllerParameters {
   /// <prefix>odom); odometry in another frame is rejected, a path in another frame transformed.
   std::string odom_frame = "odom";
   double rate = 50.0;              ///< [Hz] of actuators/command
-  /// [s] an older odom (ROS time) or cmd_vel (wall time) is stale: the command is zero.
-  double input_timeout = 0.5;
+  /// [s] of ROS time: an older odom (tracking: the command is zero) or RS joint_states is stale.
+  double state_timeout = 0.5;
+  /// [s] of wall time: an older cmd_vel (teleop: a person's commands) is stale, the command zero.
+  double cmd_vel_timeout = 0.5;
   double max_position = 1e3;       ///< [m] an odom position beyond it is rejected
   double max_cmd_vel = 10.0;       ///< [m/s, rad/s] a cmd_vel field beyond it is rejected
   double max_stamp_skew = 1.0;     ///< [s] odom or joint_states stamped further from the clock is rejected
