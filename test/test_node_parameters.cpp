@@ -3,7 +3,9 @@
 // naming the key, the value and the limit for each malformed parameter. No ROS master.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "expect_invalid_argument.hpp"
@@ -11,6 +13,7 @@
 #include "spherical_robots/config/hardware_interface_config.hpp"
 #include "spherical_robots/config/odometry_parameters.hpp"
 #include "spherical_robots/config/plant_loop_parameters.hpp"
+#include "spherical_robots/config/terrain_config.hpp"
 #include "spherical_robots/config/yaml_parameter_source.hpp"
 #include "spherical_robots/ros/freebot_ik_ros.hpp"
 #include "spherical_robots/ros/friction_drive_controller_ros.hpp"
@@ -393,6 +396,92 @@ TEST(Reconfigure, NormaControllerDefaultsAreTheCoresAndEveryGainRoundTrips) {
     EXPECT_EQ(boost::any_cast<double>(a), boost::any_cast<double>(b)) << param->name;
   }
   EXPECT_EQ(distinct.rate.kd, 0.0);  // not reconfigurable: PID1 has no derivative term
+}
+
+namespace {
+
+using PursuitConfig = spherical_robots::PurePursuitControllerConfig;
+
+/// The .cfg's numbers of config, by name.
+std::vector<std::pair<std::string, double>> doublesOf(const PursuitConfig& config) {
+  dynamic_reconfigure::Config message;
+  config.__toMessage__(message);
+  std::vector<std::pair<std::string, double>> doubles;
+  for (const auto& field : message.doubles) doubles.emplace_back(field.name, field.value);
+  return doubles;
+}
+
+}  // namespace
+
+// cfg/PurePursuitController.cfg names the gains as config/terrain.yaml does, in the same order,
+// and its defaults are the core's for 3R (what a reset in rqt_reconfigure gives) with the node's
+// default law: the names live in the .cfg and in config::namedPursuitGains, and this keeps them
+// in step.
+TEST(Reconfigure, PursuitControllerNamesAndDefaultsAreTheCores) {
+  using sr::terrain::RobotType;
+  const config::TerrainConfig defaults = fromYaml("{}", config::loadTerrainConfig);
+  EXPECT_EQ(doublesOf(PursuitConfig::__getDefault__()),
+            config::namedPursuitGains(defaults, RobotType::ThreeAxisRolling));
+  EXPECT_EQ(PursuitConfig::__getDefault__().law,
+            sr::terrain::toString(sr::PurePursuitControllerParameters{}.law));
+  const PursuitConfig loaded = sr::reconfigureConfigOf(sr::terrain::PursuitLaw::Paper, defaults,
+                                                       RobotType::RollingAndSteering);
+  EXPECT_EQ(loaded.law, "paper");
+  EXPECT_EQ(doublesOf(loaded), config::namedPursuitGains(defaults, RobotType::RollingAndSteering));
+}
+
+// Every gain goes through the node's translation both ways, to its own field: distinct values
+// survive the round trip, and only the reconfigured type's gains change.
+TEST(Reconfigure, PursuitControllerEveryGainRoundTrips) {
+  using sr::terrain::RobotType;
+  const config::TerrainConfig defaults = fromYaml("{}", config::loadTerrainConfig);
+  PursuitConfig numbered = PursuitConfig::__getDefault__();
+  dynamic_reconfigure::Config message;
+  numbered.__toMessage__(message);
+  double next = 1.0;
+  for (auto& field : message.doubles) field.value = next++;
+  ASSERT_TRUE(numbered.__fromMessage__(message));
+  const config::TerrainConfig tuned =
+      sr::withReconfiguredGains(numbered, defaults, RobotType::TwoAxisRolling);
+  EXPECT_EQ(config::namedPursuitGains(tuned, RobotType::TwoAxisRolling), doublesOf(numbered));
+  EXPECT_EQ(config::namedPursuitGains(tuned, RobotType::ThreeAxisRolling),
+            config::namedPursuitGains(defaults, RobotType::ThreeAxisRolling));
+  EXPECT_EQ(doublesOf(sr::reconfigureConfigOf(sr::terrain::PursuitLaw::Smooth, tuned,
+                                              RobotType::TwoAxisRolling)),
+            doublesOf(numbered));
+  config::TerrainConfig renamed = defaults;
+  EXPECT_INVALID_ARGUMENT(
+      config::setNamedPursuitGain(renamed, RobotType::ThreeAxisRolling, "k_thta", 1.0), "k_thta");
+}
+
+// The .cfg's ranges lie inside what the laws accept at start-up (so a slider never offers a value
+// the node must refuse), and what they refuse, a reconfiguration is refused for too, naming it.
+TEST(Reconfigure, PursuitControllerRangesPassTheStartUpChecks) {
+  using sr::terrain::PursuitLaw;
+  using sr::terrain::RobotType;
+  const config::TerrainConfig defaults = fromYaml("{}", config::loadTerrainConfig);
+  const auto minima = doublesOf(PursuitConfig::__getMin__());
+  const auto maxima = doublesOf(PursuitConfig::__getMax__());
+  ASSERT_EQ(minima.size(), maxima.size());
+  for (std::size_t i = 0; i < minima.size(); ++i) {
+    for (double bound : {minima[i].second, maxima[i].second}) {
+      config::TerrainConfig tuned = defaults;
+      config::setNamedPursuitGain(tuned, RobotType::ThreeAxisRolling, minima[i].first, bound);
+      for (PursuitLaw law : {PursuitLaw::Paper, PursuitLaw::Smooth})
+        EXPECT_NO_THROW(config::makePursuitController(law, RobotType::ThreeAxisRolling, tuned, 0.2))
+            << minima[i].first << " = " << bound;
+    }
+  }
+  config::TerrainConfig bad = defaults;
+  config::setNamedPursuitGain(bad, RobotType::ThreeAxisRolling, "k_theta", std::nan(""));
+  EXPECT_INVALID_ARGUMENT(
+      config::makePursuitController(PursuitLaw::Paper, RobotType::ThreeAxisRolling, bad, 0.2),
+      "k_theta", "nan");
+  bad = defaults;
+  config::setNamedPursuitGain(bad, RobotType::RollingAndSteering, "max_tilt", 1.2);  // > pi/3
+  EXPECT_INVALID_ARGUMENT(
+      config::makePursuitController(PursuitLaw::Smooth, RobotType::RollingAndSteering, bad, 0.2),
+      "max_tilt", "tilt limit");
 }
 
 int main(int argc, char** argv) {
