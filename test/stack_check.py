@@ -34,7 +34,7 @@ from spherical_robots_testing import Recorder, first_at_rest, silenced
 PKG = 'spherical_robots'
 NAME = 'stack_check'
 WALL_DEADLINE = 120.0          # [s] wall, for anything the stack should do in time
-CMD_VEL_TIMEOUT = 0.5          # [s] wall: pure_pursuit_controller ~input_timeout in teleop
+CMD_VEL_TIMEOUT = 0.5          # [s] wall: pure_pursuit_controller ~cmd_vel_timeout in teleop
 SETTLE = (40.0, 60.0)          # [s] simulated window in which tracking has converged
 SLACK = 0.5                    # [s] simulated: message latency at 10x real time (50 ms of wall)
 PLANT_STATUS = 'terrain_plant: terrain plant'
@@ -789,7 +789,8 @@ class SmoothnessCheck(StackFixture):
     smooth law): after 40 s of simulated time, until ~until [s] (100), consecutive
     actuators/command set-points of one actuator change sign (both above 0.01 rad/s) on fewer than
     ~max_sign_changes (0.01) of the steps, and change by no more than the hardware interface's
-    max_acceleration allows over the time between them (at least the controller's 1/50 s)."""
+    max_acceleration allows over the time between them (at least the controller's 1/50 s). Then
+    the law and gains reconfigured mid-run (test_02)."""
 
     FLOOR = 0.01  # [rad/s]
     PERIOD = 0.02  # [s] the controller's
@@ -829,6 +830,60 @@ class SmoothnessCheck(StackFixture):
         self.assertGreater(steps, 1000)
         self.assertLess(changes, float(rospy.get_param('~max_sign_changes', 0.01)) * steps)
         self.assertLessEqual(worst, 1.0)
+
+    def test_02_law_and_gains_reconfigured_mid_run(self):
+        """dynamic_reconfigure mid-run (cfg/PurePursuitController.cfg), after test_01's window: the
+        server starts from the loaded law and gains; switched to the paper law with new gains, every
+        later command is eq 55's closed form with those gains, from the error the controller
+        publishes at the same step; a NaN gain is refused and the last good gains handed back."""
+        from dynamic_reconfigure.client import Client
+        client = Client('pure_pursuit_controller', timeout=30.0)
+        loaded = {k: v for k, v in client.get_configuration(timeout=10.0).items() if k != 'groups'}
+        robot = rospy.get_param('pure_pursuit_controller/robot_type', '3R')
+        self.assertEqual(robot, '3R', 'eq 55 below is the 3R law')
+        self.assertEqual(loaded['law'], rospy.get_param('pure_pursuit_controller/law', 'smooth'))
+        for key, value in rospy.get_param('terrain/smooth_gains/3R').items():
+            self.assertEqual(loaded[key], float(value), 'the server must start from the loaded ' + key)
+        self.assertEqual(loaded['k_e'], float(rospy.get_param('terrain/gains/k_e')))
+
+        gains = {'k_theta': 1.5, 'k_phi1': 1.2, 'k_phi2': 0.1, 'k_psi': 0.6, 'k_e': 0.4}
+        errors = Recorder('tracking_error', TrackingError)
+        try:
+            client.update_configuration(dict(gains, law='paper'))
+            # Commands stamped a little after this node's clock are surely after the change.
+            changed = rospy.Time.now().to_sec() + 0.1
+            wait_until(lambda: self.commands.count() and
+                       self.commands.last().header.stamp.to_sec() >= changed + 2.0,
+                       'commands up to %.1f s' % (changed + 2.0))
+            by_stamp = {m.header.stamp: m for m in errors.since(0)
+                        if changed <= m.header.stamp.to_sec() <= changed + 2.0}
+            compared = 0
+            for command in self.commands.since(0):
+                error = by_stamp.get(command.header.stamp)
+                if error is None:
+                    continue
+                n = error.error_norm / (gains['k_e'] + error.error_norm)
+                v = error.desired_velocity
+                expected = {  # eq 55, signs per docs/conventions.md
+                    'theta': gains['k_theta'] * n * math.cos(error.zeta) +
+                             math.sqrt(v.x ** 2 + v.y ** 2 + v.z ** 2) / self.radius,
+                    'phi': -(gains['k_phi1'] * n + gains['k_phi2']) * math.sin(error.zeta),
+                    'psi': gains['k_psi'] * error.zeta}
+                for name, rate in zip(command.name, command.velocity):
+                    self.assertAlmostEqual(rate, expected[name], delta=1e-9 * (1 + abs(rate)),
+                                           msg='%s at %.2f s' % (name, command.header.stamp.to_sec()))
+                compared += 1
+            self.assertGreater(compared, 50, 'commands compared with eq 55')
+
+            kept = client.update_configuration({'k_theta': float('nan')})
+            self.assertEqual(kept['k_theta'], gains['k_theta'], 'a NaN gain must be refused')
+            self.assertEqual(kept['law'], 'paper')
+            wait_until(lambda: 'k_theta' in (self.diagnostic_value(
+                           CONTROLLER_STATUS, 'last refused reconfiguration') or ''),
+                       'diagnostics to name the refused gain')
+        finally:
+            restored = client.update_configuration(loaded)
+        self.assertEqual({k: restored[k] for k in loaded}, loaded)
 
 
 class HeightMapCheck(StackFixture):

@@ -3,14 +3,19 @@
 // naming the key, the value and the limit for each malformed parameter. No ROS master.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "expect_invalid_argument.hpp"
 #include "spherical_robots/HardwareInterfaceSimConfig.h"
 #include "spherical_robots/config/hardware_interface_config.hpp"
 #include "spherical_robots/config/odometry_parameters.hpp"
 #include "spherical_robots/config/plant_loop_parameters.hpp"
+#include "spherical_robots/config/terrain_config.hpp"
 #include "spherical_robots/config/yaml_parameter_source.hpp"
+#include "spherical_robots/ros/freebot_ik_ros.hpp"
 #include "spherical_robots/ros/friction_drive_controller_ros.hpp"
 #include "spherical_robots/ros/friction_drive_sim_ros.hpp"
 #include "spherical_robots/ros/norma_controller_ros.hpp"
@@ -32,6 +37,14 @@ template <typename Load>
 auto fromYaml(const std::string& text, Load load) {
   const TempYaml file(text);
   return load(config::YamlParameterSource(file.path()));
+}
+
+/// load(source) of a YAML file holding text, each of the source's warnings appended to warnings.
+template <typename Load>
+auto fromYaml(const std::string& text, Load load, std::vector<std::string>& warnings) {
+  const TempYaml file(text);
+  return load(config::YamlParameterSource(
+      file.path(), [&warnings](const std::string& message) { warnings.push_back(message); }));
 }
 
 config::PlantLoopParameters loop(const std::string& text) {
@@ -163,7 +176,8 @@ TEST(PurePursuitControllerParameters, DefaultsOverridesAndErrors) {
   EXPECT_EQ(p.law, sr::terrain::PursuitLaw::Smooth);
   EXPECT_EQ(p.path, "circle");
   EXPECT_EQ(p.rate, 50.0);
-  EXPECT_EQ(p.input_timeout, 0.5);
+  EXPECT_EQ(p.state_timeout, 0.5);
+  EXPECT_EQ(p.cmd_vel_timeout, 0.5);
   EXPECT_EQ(p.max_position, 1e3);
   EXPECT_EQ(p.max_cmd_vel, 10.0);
   EXPECT_EQ(p.max_stamp_skew, 1.0);
@@ -191,8 +205,10 @@ TEST(PurePursuitControllerParameters, DefaultsOverridesAndErrors) {
                           "mode", "drive", "tracking | teleop");
   EXPECT_INVALID_ARGUMENT(fromYaml("law: fast\n", sr::loadPurePursuitControllerParameters),
                           "law", "fast");
-  EXPECT_INVALID_ARGUMENT(fromYaml("input_timeout: -1\n", sr::loadPurePursuitControllerParameters),
-                          "input_timeout", "-1", "> 0");
+  EXPECT_INVALID_ARGUMENT(fromYaml("state_timeout: -1\n", sr::loadPurePursuitControllerParameters),
+                          "state_timeout", "-1", "> 0");
+  EXPECT_INVALID_ARGUMENT(fromYaml("cmd_vel_timeout: 0\n", sr::loadPurePursuitControllerParameters),
+                          "cmd_vel_timeout", "0", "> 0");
 }
 
 TEST(NormaParameters, DefaultsOverridesAndErrors) {
@@ -210,7 +226,7 @@ TEST(NormaParameters, DefaultsOverridesAndErrors) {
   EXPECT_EQ(controller.limits.max_force, 200.0);
   EXPECT_EQ(controller.publish_rate, 50.0);
   EXPECT_EQ(controller.max_stamp_skew, 1.0);
-  EXPECT_EQ(controller.input_timeout, 0.05);
+  EXPECT_EQ(controller.state_timeout, 0.05);
   const auto tracking =
       fromYaml("controller: tracking\nmax_torque: 5\n", sr::loadNormaControllerParameters);
   EXPECT_EQ(tracking.controller, sr::norma::ControllerKind::kTracking);
@@ -258,15 +274,79 @@ TEST(RotorParameters, DefaultsOverridesAndErrors) {
 TEST(FrictionDriveParameters, DefaultsOverridesAndErrors) {
   const auto controller = fromYaml("{}", sr::loadFrictionDriveControllerParameters);
   EXPECT_EQ(controller.max_actuator_rate, 1000.0);
-  EXPECT_EQ(controller.input_timeout, 0.5);
+  EXPECT_EQ(controller.command_timeout, 0.5);
   const auto sim = fromYaml("marker_rate: 5\nframe_prefix: roller/\n", sr::loadFrictionDriveSimParameters);
   EXPECT_EQ(sim.marker_rate, 5.0);
   EXPECT_EQ(sim.frame_prefix, "roller/");
-  EXPECT_EQ(sim.input_timeout, 0.5);
+  EXPECT_EQ(sim.state_timeout, 0.5);
   EXPECT_INVALID_ARGUMENT(fromYaml("marker_rate: 0\n", sr::loadFrictionDriveSimParameters),
                           "marker_rate", "> 0");
-  EXPECT_INVALID_ARGUMENT(fromYaml("input_timeout: x\n", sr::loadFrictionDriveControllerParameters),
-                          "input_timeout", "number");
+  EXPECT_INVALID_ARGUMENT(fromYaml("command_timeout: x\n", sr::loadFrictionDriveControllerParameters),
+                          "command_timeout", "number");
+}
+
+// The rule for a renamed parameter, once for every node (config::renamedNumber): the new name
+// wins, the old one still works for a release, and either way a set old name is reported once.
+TEST(RenamedParameters, NewNameWinsOldNameWorksWithOneWarning) {
+  const config::RenamedKey name{"state_timeout", "input_timeout"};
+  const auto read = [&](const config::ParameterSource& s) {
+    return config::renamedNumber(s, name, 0.5, config::positiveNumber);
+  };
+  std::vector<std::string> warnings;
+  EXPECT_EQ(fromYaml("{}", read, warnings), 0.5);
+  EXPECT_EQ(fromYaml("state_timeout: 0.2\n", read, warnings), 0.2);
+  EXPECT_TRUE(warnings.empty());
+
+  EXPECT_EQ(fromYaml("input_timeout: 0.3\n", read, warnings), 0.3);
+  ASSERT_EQ(warnings.size(), 1u);
+  for (const char* part : {"'input_timeout' is deprecated", "renamed 'state_timeout'",
+                           "state_timeout = 0.3", "docs/migration.md"})
+    EXPECT_NE(warnings[0].find(part), std::string::npos) << part << " not in: " << warnings[0];
+
+  warnings.clear();
+  EXPECT_EQ(fromYaml("input_timeout: 0.3\nstate_timeout: 0.2\n", read, warnings), 0.2);
+  ASSERT_EQ(warnings.size(), 1u);
+  for (const char* part : {"'input_timeout' is deprecated", "both are set", "state_timeout = 0.2",
+                           "ignoring input_timeout"})
+    EXPECT_NE(warnings[0].find(part), std::string::npos) << part << " not in: " << warnings[0];
+
+  // A bad value is named by the name the user wrote; the new name's wins even over a bad old one.
+  EXPECT_INVALID_ARGUMENT(fromYaml("input_timeout: -1\n", read, warnings), "input_timeout", "-1",
+                          "> 0");
+  EXPECT_INVALID_ARGUMENT(fromYaml("input_timeout: 1\nstate_timeout: 0\n", read, warnings),
+                          "state_timeout", "> 0");
+  EXPECT_EQ(fromYaml("input_timeout: x\nstate_timeout: 0.2\n", read, warnings), 0.2);
+}
+
+// Each node's timeout that was ~input_timeout up to 0.2.0 (docs/migration.md): the old name
+// still sets it, with one warning per new name it sets.
+TEST(RenamedParameters, EveryNodeStillReadsInputTimeout) {
+  const std::string old_name = "input_timeout: 0.25\n";
+  std::vector<std::string> warnings;
+  const auto pursuit = fromYaml(old_name, sr::loadPurePursuitControllerParameters, warnings);
+  EXPECT_EQ(pursuit.state_timeout, 0.25);
+  EXPECT_EQ(pursuit.cmd_vel_timeout, 0.25);
+  EXPECT_EQ(warnings.size(), 2u);
+  const auto pursuit_new = fromYaml(old_name + "cmd_vel_timeout: 0.1\n",
+                                    sr::loadPurePursuitControllerParameters, warnings);
+  EXPECT_EQ(pursuit_new.state_timeout, 0.25);
+  EXPECT_EQ(pursuit_new.cmd_vel_timeout, 0.1);
+
+  warnings.clear();
+  EXPECT_EQ(fromYaml(old_name, sr::loadNormaControllerParameters, warnings).state_timeout, 0.25);
+  EXPECT_EQ(fromYaml(old_name, sr::loadFrictionDriveControllerParameters, warnings).command_timeout,
+            0.25);
+  EXPECT_EQ(fromYaml(old_name, sr::loadFrictionDriveSimParameters, warnings).state_timeout, 0.25);
+  const config::YamlParameterSource freebot(SPHERICAL_ROBOTS_SOURCE_DIR "/config/freebot.yaml");
+  const auto ik = fromYaml(
+      old_name,
+      [&](const config::ParameterSource& node) { return sr::loadFreebotIkParameters(freebot, node); },
+      warnings);
+  EXPECT_EQ(ik.state_timeout, 0.25);
+  EXPECT_EQ(warnings.size(), 4u);
+  EXPECT_EQ(fromYaml("{}", [&](const config::ParameterSource& node) {
+              return sr::loadFreebotIkParameters(freebot, node);
+            }).state_timeout, 0.1);
 }
 
 // dynamic_reconfigure writes its .cfg defaults to the parameter server when a parameter is unset:
@@ -316,6 +396,92 @@ TEST(Reconfigure, NormaControllerDefaultsAreTheCoresAndEveryGainRoundTrips) {
     EXPECT_EQ(boost::any_cast<double>(a), boost::any_cast<double>(b)) << param->name;
   }
   EXPECT_EQ(distinct.rate.kd, 0.0);  // not reconfigurable: PID1 has no derivative term
+}
+
+namespace {
+
+using PursuitConfig = spherical_robots::PurePursuitControllerConfig;
+
+/// The .cfg's numbers of config, by name.
+std::vector<std::pair<std::string, double>> doublesOf(const PursuitConfig& config) {
+  dynamic_reconfigure::Config message;
+  config.__toMessage__(message);
+  std::vector<std::pair<std::string, double>> doubles;
+  for (const auto& field : message.doubles) doubles.emplace_back(field.name, field.value);
+  return doubles;
+}
+
+}  // namespace
+
+// cfg/PurePursuitController.cfg names the gains as config/terrain.yaml does, in the same order,
+// and its defaults are the core's for 3R (what a reset in rqt_reconfigure gives) with the node's
+// default law: the names live in the .cfg and in config::namedPursuitGains, and this keeps them
+// in step.
+TEST(Reconfigure, PursuitControllerNamesAndDefaultsAreTheCores) {
+  using sr::terrain::RobotType;
+  const config::TerrainConfig defaults = fromYaml("{}", config::loadTerrainConfig);
+  EXPECT_EQ(doublesOf(PursuitConfig::__getDefault__()),
+            config::namedPursuitGains(defaults, RobotType::ThreeAxisRolling));
+  EXPECT_EQ(PursuitConfig::__getDefault__().law,
+            sr::terrain::toString(sr::PurePursuitControllerParameters{}.law));
+  const PursuitConfig loaded = sr::reconfigureConfigOf(sr::terrain::PursuitLaw::Paper, defaults,
+                                                       RobotType::RollingAndSteering);
+  EXPECT_EQ(loaded.law, "paper");
+  EXPECT_EQ(doublesOf(loaded), config::namedPursuitGains(defaults, RobotType::RollingAndSteering));
+}
+
+// Every gain goes through the node's translation both ways, to its own field: distinct values
+// survive the round trip, and only the reconfigured type's gains change.
+TEST(Reconfigure, PursuitControllerEveryGainRoundTrips) {
+  using sr::terrain::RobotType;
+  const config::TerrainConfig defaults = fromYaml("{}", config::loadTerrainConfig);
+  PursuitConfig numbered = PursuitConfig::__getDefault__();
+  dynamic_reconfigure::Config message;
+  numbered.__toMessage__(message);
+  double next = 1.0;
+  for (auto& field : message.doubles) field.value = next++;
+  ASSERT_TRUE(numbered.__fromMessage__(message));
+  const config::TerrainConfig tuned =
+      sr::withReconfiguredGains(numbered, defaults, RobotType::TwoAxisRolling);
+  EXPECT_EQ(config::namedPursuitGains(tuned, RobotType::TwoAxisRolling), doublesOf(numbered));
+  EXPECT_EQ(config::namedPursuitGains(tuned, RobotType::ThreeAxisRolling),
+            config::namedPursuitGains(defaults, RobotType::ThreeAxisRolling));
+  EXPECT_EQ(doublesOf(sr::reconfigureConfigOf(sr::terrain::PursuitLaw::Smooth, tuned,
+                                              RobotType::TwoAxisRolling)),
+            doublesOf(numbered));
+  config::TerrainConfig renamed = defaults;
+  EXPECT_INVALID_ARGUMENT(
+      config::setNamedPursuitGain(renamed, RobotType::ThreeAxisRolling, "k_thta", 1.0), "k_thta");
+}
+
+// The .cfg's ranges lie inside what the laws accept at start-up (so a slider never offers a value
+// the node must refuse), and what they refuse, a reconfiguration is refused for too, naming it.
+TEST(Reconfigure, PursuitControllerRangesPassTheStartUpChecks) {
+  using sr::terrain::PursuitLaw;
+  using sr::terrain::RobotType;
+  const config::TerrainConfig defaults = fromYaml("{}", config::loadTerrainConfig);
+  const auto minima = doublesOf(PursuitConfig::__getMin__());
+  const auto maxima = doublesOf(PursuitConfig::__getMax__());
+  ASSERT_EQ(minima.size(), maxima.size());
+  for (std::size_t i = 0; i < minima.size(); ++i) {
+    for (double bound : {minima[i].second, maxima[i].second}) {
+      config::TerrainConfig tuned = defaults;
+      config::setNamedPursuitGain(tuned, RobotType::ThreeAxisRolling, minima[i].first, bound);
+      for (PursuitLaw law : {PursuitLaw::Paper, PursuitLaw::Smooth})
+        EXPECT_NO_THROW(config::makePursuitController(law, RobotType::ThreeAxisRolling, tuned, 0.2))
+            << minima[i].first << " = " << bound;
+    }
+  }
+  config::TerrainConfig bad = defaults;
+  config::setNamedPursuitGain(bad, RobotType::ThreeAxisRolling, "k_theta", std::nan(""));
+  EXPECT_INVALID_ARGUMENT(
+      config::makePursuitController(PursuitLaw::Paper, RobotType::ThreeAxisRolling, bad, 0.2),
+      "k_theta", "nan");
+  bad = defaults;
+  config::setNamedPursuitGain(bad, RobotType::RollingAndSteering, "max_tilt", 1.2);  // > pi/3
+  EXPECT_INVALID_ARGUMENT(
+      config::makePursuitController(PursuitLaw::Smooth, RobotType::RollingAndSteering, bad, 0.2),
+      "max_tilt", "tilt limit");
 }
 
 int main(int argc, char** argv) {

@@ -5,7 +5,7 @@
 // degree <= 3 reproduced exactly; the velocity against a finite difference of the position; the
 // ends, the repetition of a closed path, the timing of untimed points and of stamps, and bad
 // input refused naming the point and its value. Then PathTracker::follow, the time base of a
-// path received while the robot runs.
+// path received while the robot runs, and PathTracker::setLaw, a law changed while it runs.
 
 #include <gtest/gtest.h>
 
@@ -333,6 +333,30 @@ TEST_F(ReceivedPathTimeBase, APastFirstStampStartsTheClockAtTheNextCommand) {
   const DesiredPoint later = desiredAt(14 * kSecond + kSecond / 50);
   EXPECT_NEAR((later.position.head<2>() - line_.position(4.0)).norm(), 0.0, 1e-15);
   EXPECT_EQ(&tracker_.path(), &line_);
+}
+
+// PathTracker::setLaw (dynamic_reconfigure's new gains mid-run): the path's clock goes on, and the
+// next command is eq 55's with the new gains, from the error the tracker reports.
+TEST_F(ReceivedPathTimeBase, ANewLawCommandsFromTheNextStepOnTheSameClock) {
+  desiredAt(0);
+  desiredAt(5 * kSecond);
+  PursuitGains gains = defaultGains(RobotType::ThreeAxisRolling);
+  gains.k_theta = 0.7;
+  gains.k_phi1 = 1.1;
+  gains.k_phi2 = 0.05;
+  gains.k_psi = 0.4;
+  const PurePursuitController retuned(RobotType::ThreeAxisRolling, gains, 0.2);
+  tracker_.setLaw(retuned);
+  EXPECT_EQ(&tracker_.law(), &retuned);
+  const TrackingCommand command =
+      tracker_.command(6 * kSecond, kinematics_.geometry(TerrainState{}), 0.0);
+  EXPECT_NEAR((command.desired.position.head<2>() - circle_.position(6.0)).norm(), 0.0, 1e-15);
+  const double n = command.error.norm / (gains.k_e + command.error.norm);
+  const double zeta = command.error.zeta;
+  EXPECT_NEAR(command.rates.roll_rate,
+              gains.k_theta * n * std::cos(zeta) + circle_.velocity(6.0).norm() / 0.2, 1e-12);
+  EXPECT_NEAR(command.rates.lateral_rate, -(gains.k_phi1 * n + gains.k_phi2) * std::sin(zeta), 1e-12);
+  EXPECT_NEAR(command.rates.turn_rate, gains.k_psi * zeta, 1e-12);
 }
 
 }  // namespace

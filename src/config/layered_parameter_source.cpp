@@ -47,4 +47,6 @@ std::string LayeredParameterSource::origin() const {
   return names;
 }
 
+void LayeredParameterSource::warn(const std::string& message) const { layers_.back()->warn(message); }
+
 }  // namespace spherical_robots::config

@@ -25,41 +25,57 @@ double nonNegative(const ParameterSource& source, const std::string& key, double
   return value;
 }
 
+template <typename Gains>
+using GainFields = std::initializer_list<std::pair<const char*, double Gains::*>>;
+
+// Each gain by its name in config/terrain.yaml and cfg/PurePursuitController.cfg. k_e, common to
+// every type, is terrain/gains/k_e, not terrain/gains/<type>/k_e.
+const std::string kCommonPaperGain = "k_e";
+constexpr GainFields<terrain::PursuitGains> kPaperGainFields = {
+    {"k_theta", &terrain::PursuitGains::k_theta},   {"k_phi1", &terrain::PursuitGains::k_phi1},
+    {"k_phi2", &terrain::PursuitGains::k_phi2},     {"k_psi", &terrain::PursuitGains::k_psi},
+    {"k_theta1", &terrain::PursuitGains::k_theta1}, {"k_theta2", &terrain::PursuitGains::k_theta2},
+    {"k_alpha", &terrain::PursuitGains::k_alpha},   {"k_phi", &terrain::PursuitGains::k_phi}};
+using Smooth = terrain::SmoothPursuitGains;
+constexpr GainFields<Smooth> kSmoothGainFields = {
+    {"window", &Smooth::window},         {"lead", &Smooth::lead},
+    {"approach_speed", &Smooth::approach_speed}, {"along_gain", &Smooth::along_gain},
+    {"cross_gain", &Smooth::cross_gain}, {"heading_gain", &Smooth::heading_gain},
+    {"tilt_gain", &Smooth::tilt_gain},   {"max_tilt_rate", &Smooth::max_tilt_rate},
+    {"max_tilt", &Smooth::max_tilt},     {"min_speed", &Smooth::min_speed}};
+
 /// Each named gain read from prefix + name with read(source, key, fallback); absent keys keep
 /// the value gains already holds.
 template <typename Gains, typename Read>
 void readGains(const ParameterSource& source, const std::string& prefix, Gains& gains,
-               std::initializer_list<std::pair<const char*, double Gains::*>> fields, Read read) {
+               GainFields<Gains> fields, Read read) {
   for (const auto& [name, member] : fields) {
     gains.*member = read(source, prefix + name, gains.*member);
   }
 }
 
+/// The member of gains called name, null if none is.
+template <typename Gains>
+double* gainNamed(Gains& gains, GainFields<Gains> fields, const std::string& name) {
+  for (const auto& [field, member] : fields)
+    if (name == field) return &(gains.*member);
+  return nullptr;
+}
+
 terrain::PursuitGains loadGains(const ParameterSource& source, terrain::RobotType type,
                                 double k_e) {
-  using G = terrain::PursuitGains;
   terrain::PursuitGains gains = terrain::defaultGains(type);
   gains.k_e = k_e;
-  readGains(source, kRoot + "gains/" + terrain::toString(type) + "/", gains,
-            {{"k_theta", &G::k_theta}, {"k_phi1", &G::k_phi1}, {"k_phi2", &G::k_phi2},
-             {"k_psi", &G::k_psi}, {"k_theta1", &G::k_theta1}, {"k_theta2", &G::k_theta2},
-             {"k_alpha", &G::k_alpha}, {"k_phi", &G::k_phi}},
+  readGains(source, kRoot + "gains/" + terrain::toString(type) + "/", gains, kPaperGainFields,
             nonNegative);
   return gains;
 }
 
 // The smooth law's gains, checked with the key in the message; the ranges are the core's.
 terrain::SmoothPursuitGains loadSmoothGains(const ParameterSource& source, terrain::RobotType type) {
-  using G = terrain::SmoothPursuitGains;
   const std::string prefix = kRoot + "smooth_gains/" + terrain::toString(type) + "/";
   terrain::SmoothPursuitGains gains = terrain::defaultSmoothGains(type);
-  readGains(source, prefix, gains,
-            {{"window", &G::window}, {"lead", &G::lead}, {"approach_speed", &G::approach_speed},
-             {"along_gain", &G::along_gain}, {"cross_gain", &G::cross_gain},
-             {"heading_gain", &G::heading_gain}, {"tilt_gain", &G::tilt_gain},
-             {"max_tilt_rate", &G::max_tilt_rate}, {"max_tilt", &G::max_tilt},
-             {"min_speed", &G::min_speed}},
-            finiteNumber);
+  readGains(source, prefix, gains, kSmoothGainFields, finiteNumber);
   try {
     terrain::validate(gains);
   } catch (const std::invalid_argument& error) {
@@ -114,6 +130,25 @@ std::unique_ptr<terrain::PursuitController> makePursuitController(terrain::Pursu
   }
   return std::make_unique<terrain::SmoothPursuitController>(type, config.smooth_gains.at(type),
                                                             radius, config.tilt_limit);
+}
+
+std::vector<std::pair<std::string, double>> namedPursuitGains(const TerrainConfig& config,
+                                                              terrain::RobotType type) {
+  const terrain::PursuitGains& paper = config.gains.at(type);
+  const terrain::SmoothPursuitGains& smooth = config.smooth_gains.at(type);
+  std::vector<std::pair<std::string, double>> named{{kCommonPaperGain, paper.k_e}};
+  for (const auto& [name, member] : kPaperGainFields) named.emplace_back(name, paper.*member);
+  for (const auto& [name, member] : kSmoothGainFields) named.emplace_back(name, smooth.*member);
+  return named;
+}
+
+void setNamedPursuitGain(TerrainConfig& config, terrain::RobotType type, const std::string& name,
+                         double value) {
+  terrain::PursuitGains& paper = config.gains.at(type);
+  double* gain = name == kCommonPaperGain ? &paper.k_e : gainNamed(paper, kPaperGainFields, name);
+  if (gain == nullptr) gain = gainNamed(config.smooth_gains.at(type), kSmoothGainFields, name);
+  if (gain == nullptr) throw std::invalid_argument("no pursuit gain is called '" + name + "'");
+  *gain = value;
 }
 
 std::unique_ptr<terrain::Surface> makeSurface(const SurfaceSpec& spec,

@@ -2,15 +2,24 @@
 
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace spherical_robots::config {
 
-YamlParameterSource::YamlParameterSource(const std::string& path) : path_(path) {
+YamlParameterSource::YamlParameterSource(const std::string& path, Warn warn)
+    : path_(path), warn_(std::move(warn)) {
   try {
     root_ = YAML::LoadFile(path);
   } catch (const YAML::Exception& error) {
     throw std::invalid_argument("cannot read parameters from '" + path + "': " + error.what());
   }
+}
+
+void YamlParameterSource::warn(const std::string& message) const {
+  if (warn_)
+    warn_(message);
+  else
+    ParameterSource::warn(message);
 }
 
 YAML::Node YamlParameterSource::find(const std::string& key) const {

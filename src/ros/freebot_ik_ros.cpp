@@ -24,7 +24,8 @@ constexpr double kGoalUnitTolerance = 1e-3;
 FreebotIkParameters loadFreebotIkParameters(const config::ParameterSource& stack,
                                             const config::ParameterSource& node) {
   FreebotIkParameters p{config::freebotChain(stack), config::freebotGoalExecutive(stack)};
-  p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);
+  p.state_timeout = config::renamedNumber(node, {"state_timeout", "input_timeout"},
+                                          p.state_timeout, config::positiveNumber);
   p.max_stamp_skew = config::positiveNumber(node, "max_stamp_skew", p.max_stamp_skew);
   p.max_goal_distance = config::positiveNumber(node, "max_goal_distance", p.max_goal_distance);
   p.base_frame = conversions::freebotLinkFrame(node.text("frame_prefix").value_or(""), 0);
@@ -34,7 +35,7 @@ FreebotIkParameters loadFreebotIkParameters(const config::ParameterSource& stack
 FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
     : parameters_(loadFreebotIkParameters(RosParameterSource(nh), RosParameterSource(pnh))),
       executive_(parameters_.chain, parameters_.executive),
-      state_input_(nh.resolveName("freebot_state"), parameters_.input_timeout),
+      state_input_(nh.resolveName("freebot_state"), parameters_.state_timeout),
       goal_input_(nh.resolveName("move_freebot/goal"), 1e9),
       work_([this](const spherical_robots::FreebotState& msg) { drive(msg); }, step_publications_),
       goals_(nh, "move_freebot",

@@ -15,7 +15,8 @@ FrictionDriveControllerParameters loadFrictionDriveControllerParameters(
     const config::ParameterSource& node) {
   FrictionDriveControllerParameters p;
   p.max_actuator_rate = config::positiveNumber(node, "max_actuator_rate", p.max_actuator_rate);
-  p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);
+  p.command_timeout = config::renamedNumber(node, {"command_timeout", "input_timeout"},
+                                            p.command_timeout, config::positiveNumber);
   return p;
 }
 
@@ -23,7 +24,7 @@ FrictionDriveControllerRos::FrictionDriveControllerRos(ros::NodeHandle nh, ros::
     : actuation_(loadRollerActuation(nh)),
       last_motor_rates_(2, 0.0),
       parameters_(loadFrictionDriveControllerParameters(RosParameterSource(pnh))),
-      input_(nh.resolveName("drive/command"), parameters_.input_timeout),
+      input_(nh.resolveName("drive/command"), parameters_.command_timeout),
       work_([this](const sensor_msgs::JointState& msg) { convert(msg); }, step_publications_),
       updater_(nh, pnh, pnh.getNamespace()) {
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");

@@ -17,7 +17,8 @@ FrictionDriveSimParameters loadFrictionDriveSimParameters(const config::Paramete
   p.frame_prefix = node.text("frame_prefix").value_or("");
   p.marker_rate = config::positiveNumber(node, "marker_rate", p.marker_rate);
   p.max_actuator_rate = config::positiveNumber(node, "max_actuator_rate", p.max_actuator_rate);
-  p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);
+  p.state_timeout = config::renamedNumber(node, {"state_timeout", "input_timeout"},
+                                          p.state_timeout, config::positiveNumber);
   return p;
 }
 
@@ -25,7 +26,7 @@ FrictionDriveSimRos::FrictionDriveSimRos(ros::NodeHandle nh, ros::NodeHandle pnh
     : actuation_(loadRollerActuation(nh)),
       parameters_(loadFrictionDriveSimParameters(RosParameterSource(pnh))),
       heading_frame_(parameters_.frame_prefix + "heading"),
-      input_(nh.resolveName("actuators/state"), parameters_.input_timeout),
+      input_(nh.resolveName("actuators/state"), parameters_.state_timeout),
       work_([this](const sensor_msgs::JointState& msg) { drive(msg); }, step_publications_),
       updater_(nh, pnh, pnh.getNamespace()) {
   drive_state_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "drive/state");

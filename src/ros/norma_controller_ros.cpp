@@ -81,7 +81,8 @@ NormaControllerParameters loadNormaControllerParameters(const config::ParameterS
   p.limits = control.limits;
   p.publish_rate = config::positiveNumber(node, "publish_rate", p.publish_rate);
   p.max_stamp_skew = config::positiveNumber(node, "max_stamp_skew", p.max_stamp_skew);
-  p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);
+  p.state_timeout = config::renamedNumber(node, {"state_timeout", "input_timeout"},
+                                          p.state_timeout, config::positiveNumber);
   p.odom_frame = node.text("odom_frame").value_or(p.odom_frame);
   return p;
 }
@@ -91,9 +92,9 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       robot_(fromRobotDescription(nh, config::normaParametersFromUrdf)),
       loop_(norma::NormaController(robot_, parameters_.controller, parameters_.gains),
             parameters_.limits),
-      input_(nh.resolveName("joint_states"), parameters_.input_timeout),
-      odom_input_(nh.resolveName("odom"), parameters_.input_timeout),
-      actuator_input_(nh.resolveName("actuators/state"), parameters_.input_timeout),
+      input_(nh.resolveName("joint_states"), parameters_.state_timeout),
+      odom_input_(nh.resolveName("odom"), parameters_.state_timeout),
+      actuator_input_(nh.resolveName("actuators/state"), parameters_.state_timeout),
       work_([this](const sensor_msgs::JointState& msg) { control(msg); }, step_publications_),
       updater_(nh, pnh, pnh.getNamespace()) {
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");

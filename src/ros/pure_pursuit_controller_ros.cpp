@@ -36,6 +36,35 @@ PurePursuitControllerParameters::Mode PurePursuitControllerParameters::modeFromS
   throw std::invalid_argument("unknown mode (tracking | teleop)");
 }
 
+spherical_robots::PurePursuitControllerConfig reconfigureConfigOf(
+    terrain::PursuitLaw law, const config::TerrainConfig& terrain, terrain::RobotType type) {
+  spherical_robots::PurePursuitControllerConfig config =
+      spherical_robots::PurePursuitControllerConfig::__getDefault__();
+  dynamic_reconfigure::Config message;
+  config.__toMessage__(message);
+  const std::vector<std::pair<std::string, double>> gains = config::namedPursuitGains(terrain, type);
+  for (dynamic_reconfigure::DoubleParameter& field : message.doubles) {
+    const auto gain = std::find_if(gains.begin(), gains.end(),
+                                   [&](const auto& named) { return named.first == field.name; });
+    if (gain == gains.end())
+      throw std::invalid_argument("cfg/PurePursuitController.cfg's '" + field.name +
+                                  "' is no pursuit gain");
+    field.value = gain->second;
+  }
+  config.__fromMessage__(message);
+  config.law = terrain::toString(law);
+  return config;
+}
+
+config::TerrainConfig withReconfiguredGains(const spherical_robots::PurePursuitControllerConfig& config,
+                                            config::TerrainConfig terrain, terrain::RobotType type) {
+  dynamic_reconfigure::Config message;
+  config.__toMessage__(message);
+  for (const dynamic_reconfigure::DoubleParameter& field : message.doubles)
+    config::setNamedPursuitGain(terrain, type, field.name, field.value);
+  return terrain;
+}
+
 PurePursuitControllerParameters loadPurePursuitControllerParameters(
     const config::ParameterSource& node) {
   using P = PurePursuitControllerParameters;
@@ -48,7 +77,11 @@ PurePursuitControllerParameters loadPurePursuitControllerParameters(
   p.path_tf_timeout = config::positiveNumber(node, "path_tf_timeout", p.path_tf_timeout);
   p.odom_frame = node.text("odom_frame").value_or(p.odom_frame);
   p.rate = config::positiveNumber(node, "rate", p.rate);
-  p.input_timeout = config::positiveNumber(node, "input_timeout", p.input_timeout);
+  // One name (input_timeout) timed both up to 0.2.0: for one release it still sets both.
+  p.state_timeout = config::renamedNumber(node, {"state_timeout", "input_timeout"},
+                                          p.state_timeout, config::positiveNumber);
+  p.cmd_vel_timeout = config::renamedNumber(node, {"cmd_vel_timeout", "input_timeout"},
+                                            p.cmd_vel_timeout, config::positiveNumber);
   p.max_position = config::positiveNumber(node, "max_position", p.max_position);
   p.max_cmd_vel = config::positiveNumber(node, "max_cmd_vel", p.max_cmd_vel);
   p.max_stamp_skew = config::positiveNumber(node, "max_stamp_skew", p.max_stamp_skew);
@@ -62,16 +95,17 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
       radius_(radiusFromRobotDescription(nh)),
       clock_(parameters_.max_clock_step),
       input_(nh.resolveName(parameters_.mode == Mode::Tracking ? "odom" : "cmd_vel"),
-             parameters_.input_timeout),
-      tilt_input_(nh.resolveName("joint_states"), parameters_.input_timeout),
+             parameters_.mode == Mode::Tracking ? parameters_.state_timeout
+                                                : parameters_.cmd_vel_timeout),
+      tilt_input_(nh.resolveName("joint_states"), parameters_.state_timeout),
       command_rate_(nh.resolveName("actuators/command"), parameters_.rate,
                     loadRateTolerance(RosParameterSource(pnh)), [this] { return now(); }),
       updater_(nh, pnh, pnh.getNamespace()) {
-  const config::TerrainConfig terrain_config = config::loadTerrainConfig(RosParameterSource(nh));
-  controller_ = config::makePursuitController(parameters_.law, parameters_.robot_type,
-                                              terrain_config, radius_);
+  terrain_config_ = config::loadTerrainConfig(RosParameterSource(nh));
+  law_ = parameters_.law;
+  controller_ = config::makePursuitController(law_, parameters_.robot_type, terrain_config_, radius_);
 
-  surface_ = config::makeSurface(terrain_config.surface);
+  surface_ = config::makeSurface(terrain_config_.surface);
   body_frame_ = std::make_unique<terrain::BodyFrame>(*surface_, radius_);
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
   // Feedback through standard messages only: odometry (any source's, e.g. robot_localization's)
@@ -89,7 +123,7 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
     desired_path_pub_ = nh.advertise<nav_msgs::Path>("desired_path", 1, true);
     if (parameters_.path != PurePursuitControllerParameters::kPathFromTopic) {
       try {
-        path_ = config::makePath(parameters_.path, terrain_config);
+        path_ = config::makePath(parameters_.path, terrain_config_);
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument("parameter " + pnh.resolveName("path") + " = '" +
                                     parameters_.path + "': " + e.what() + ", or " +
@@ -107,6 +141,12 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
                                         false, false);
     // Latched, the last one wins: a new path replaces the one followed.
     path_sub_ = nh.subscribe("path", 1, &PurePursuitControllerRos::onPath, this);
+    // The server starts from the law and gains loaded above (config/terrain.yaml), not the .cfg's.
+    reconfigure_ =
+        std::make_unique<dynamic_reconfigure::Server<spherical_robots::PurePursuitControllerConfig>>(pnh);
+    reconfigure_->updateConfig(reconfigureConfigOf(law_, terrain_config_, parameters_.robot_type));
+    reconfigure_->setCallback([this](spherical_robots::PurePursuitControllerConfig& config,
+                                     std::uint32_t level) { onReconfigure(config, level); });
     ROS_INFO_STREAM("Tracking " << (path_ ? path_->describe() : "nothing until a path arrives")
                                 << " (a nav_msgs/Path on " << path_sub_.getTopic()
                                 << " replaces it) on " << surface_->describe() << " with a "
@@ -114,7 +154,7 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
                                 << " sphere, R = " << radius_ << " m");
   } else {
     teleop_mapping_ = std::make_unique<terrain::TeleopMapping>(
-        parameters_.robot_type, radius_, terrain_config.tilt_limit, parameters_.teleop_tilt_gain);
+        parameters_.robot_type, radius_, terrain_config_.tilt_limit, parameters_.teleop_tilt_gain);
     cmd_vel_sub_ = nh.subscribe("cmd_vel", 10, &PurePursuitControllerRos::onCmdVel, this);
     ROS_INFO_STREAM("Teleoperating a " << terrain::toString(parameters_.robot_type) << " sphere, R = " << radius_
                                        << " m, from " << input_.topic());
@@ -338,7 +378,7 @@ terrain::DriveRates PurePursuitControllerRos::teleop() {
   // A person's command timeout counts wall time: at 10x real time, cmd_vel at 10 Hz of wall time
   // would otherwise be 1 s of simulated time apart, twice the timeout.
   if (last_cmd_vel_wall_.isZero() ||
-      (ros::WallTime::now() - last_cmd_vel_wall_).toSec() > parameters_.input_timeout)
+      (ros::WallTime::now() - last_cmd_vel_wall_).toSec() > parameters_.cmd_vel_timeout)
     return {};
   const terrain::TeleopCommand command = teleop_mapping_->command(request_, tilt_);
   // Named as cmd_vel fields, which is what the operator sends.
@@ -350,6 +390,34 @@ terrain::DriveRates PurePursuitControllerRos::teleop() {
   return command.rates;
 }
 
+void PurePursuitControllerRos::onReconfigure(spherical_robots::PurePursuitControllerConfig& config,
+                                             std::uint32_t /*level*/) {
+  const terrain::RobotType type = parameters_.robot_type;
+  try {
+    const terrain::PursuitLaw law = terrain::pursuitLawFromString(config.law);
+    config::TerrainConfig tuned = withReconfiguredGains(config, terrain_config_, type);
+    // The server's first call hands back the start-up law and gains: nothing changes.
+    if (law == law_ && config::namedPursuitGains(tuned, type) ==
+                           config::namedPursuitGains(terrain_config_, type))
+      return;
+    std::unique_ptr<terrain::PursuitController> controller =
+        config::makePursuitController(law, type, tuned, radius_);
+    if (tracker_) tracker_->setLaw(*controller);
+    controller_ = std::move(controller);
+    terrain_config_ = std::move(tuned);
+    law_ = law;
+    ROS_INFO_STREAM("pure_pursuit_controller: reconfigured: the " << terrain::toString(law_)
+                                                                  << " law with the new gains");
+  } catch (const std::invalid_argument& e) {
+    reconfigure_problem_ = e.what();
+    ROS_ERROR_STREAM("pure_pursuit_controller: reconfiguration refused, the last good law and "
+                     "gains kept: "
+                     << e.what());
+    config = reconfigureConfigOf(law_, terrain_config_, type);
+  }
+  updater_.force_update();
+}
+
 void PurePursuitControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   status.summary(diagnostic_msgs::DiagnosticStatus::OK,
                  parameters_.mode == Mode::Tracking
@@ -357,6 +425,8 @@ void PurePursuitControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrap
                      : "teleop");
   status.add("robot type", terrain::toString(parameters_.robot_type));
   if (parameters_.mode == Mode::Tracking) {
+    status.add("law", terrain::toString(law_));
+    if (!reconfigure_problem_.empty()) status.add("last refused reconfiguration", reconfigure_problem_);
     reportPath(status);
     status.add("|e_t| [m]", error_.norm);
     status.add("zeta [rad]", error_.zeta);

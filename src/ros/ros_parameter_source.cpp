@@ -1,6 +1,7 @@
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 
 #include <XmlRpcValue.h>
+#include <ros/console.h>
 
 #include <sstream>
 #include <stdexcept>
@@ -83,6 +84,8 @@ std::optional<std::vector<std::string>> RosParameterSource::keys(const std::stri
 }
 
 std::string RosParameterSource::origin() const { return nh_.getNamespace(); }
+
+void RosParameterSource::warn(const std::string& message) const { ROS_WARN_STREAM(message); }
 
 std::string RosParameterSource::resolve(const std::string& key) const { return nh_.resolveName(key); }
 

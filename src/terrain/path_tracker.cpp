@@ -8,7 +8,9 @@ namespace spherical_robots::terrain {
 
 PathTracker::PathTracker(const PursuitController& law, const ReferencePath& path,
                          const Surface& surface)
-    : law_(law), path_(&path), surface_(surface) {}
+    : law_(&law), path_(&path), surface_(surface) {}
+
+void PathTracker::setLaw(const PursuitController& law) { law_ = &law; }
 
 void PathTracker::follow(const ReferencePath& path, Nanoseconds first_stamp, Nanoseconds received) {
   path_ = &path;
@@ -28,10 +30,10 @@ TrackingCommand PathTracker::command(Nanoseconds now, const ContactGeometry& geo
     result.desired.velocity.setZero();
   } else {
     result.desired =
-        liftOntoSurface(*path_, surface_, stampSeconds(now - start_), law_.velocityWindow());
+        liftOntoSurface(*path_, surface_, stampSeconds(now - start_), law_->velocityWindow());
   }
   result.error = trackingError(geometry, result.desired.position);
-  result.rates = law_.command(geometry, tilt, result.error, result.desired.velocity);
+  result.rates = law_->command(geometry, tilt, result.error, result.desired.velocity);
   // Nothing non-finite leaves the controller.
   requireFinite(result.error.norm, "|e_t|");
   requireFinite(result.error.zeta, "zeta");

@@ -27,7 +27,7 @@ void validate(const StackSampling& sampling) {
                       {sampling.publish_rate, "plant publish rate [Hz]"},
                       {sampling.state_timeout, "plant state timeout [s]"},
                       {sampling.control_rate, "controller rate [Hz]"},
-                      {sampling.input_timeout, "controller input timeout [s]"},
+                      {sampling.controller_state_timeout, "controller state timeout [s]"},
                       {sampling.hardware_rate, "hardware interface rate [Hz]"},
                       {sampling.max_velocity, "actuator velocity limit [rad/s]"},
                       {sampling.max_acceleration, "actuator acceleration limit [rad/s^2]"},
@@ -87,7 +87,7 @@ void SampledTerrainLoop::step() {
   if (now_ >= control_due_) {
     control_due_ = now_ + control_period_;
     DriveRates command;
-    if (received_at_ != 0 && withinTimeout(received_at_, now_, sampling_.input_timeout)) {
+    if (received_at_ != 0 && withinTimeout(received_at_, now_, sampling_.controller_state_timeout)) {
       tracked_ = tracker_.command(now_, received_, received_tilt_);
       command = tracked_.rates;
     }

@@ -25,6 +25,8 @@ class LayeredParameterSource final : public ParameterSource {
   std::optional<std::vector<std::string>> keys(const std::string& key) const override;
   /// "a.yaml + b.yaml"
   std::string origin() const override;
+  /// Through the last layer, the one a user overrides the others with.
+  void warn(const std::string& message) const override;
 
  private:
   /// The value of the topmost layer that has key.

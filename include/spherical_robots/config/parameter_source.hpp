@@ -27,6 +27,10 @@ class ParameterSource {
   virtual std::optional<std::vector<std::string>> keys(const std::string& key) const = 0;
   /// Where the values come from, for error messages ("config/terrain.yaml", "/robot1/controller").
   virtual std::string origin() const = 0;
+  /// Tells the user of a parameter that is read but should change (a deprecated name, see
+  /// renamedNumber); the loaders call it once, at start. Standard error unless overridden: the
+  /// parameter server's source logs it (rosconsole).
+  virtual void warn(const std::string& message) const;
 };
 
 /// The number at key, or fallback if absent; throws std::invalid_argument naming the key, the
@@ -41,6 +45,19 @@ double nonNegativeNumber(const ParameterSource& source, const std::string& key, 
 
 /// finiteNumber that must also be a whole number >= minimum (and fit an int).
 int wholeNumber(const ParameterSource& source, const std::string& key, int fallback, int minimum);
+
+/// A parameter's name, and the one it had before a release renamed it (docs/migration.md); the old
+/// name is still read for one release.
+struct RenamedKey {
+  std::string key;
+  std::string old_key;
+};
+
+/// check(source, name, fallback) of a renamed parameter (check: finiteNumber, positiveNumber...):
+/// at name.key; else at name.old_key; else fallback. A set old_key is reported through
+/// source.warn, naming both names and the value used: the new name's when both are set.
+double renamedNumber(const ParameterSource& source, const RenamedKey& name, double fallback,
+                     double (*check)(const ParameterSource&, const std::string&, double));
 
 /// The string at key (or fallback if absent) turned into a value by parse, e.g.
 /// terrain::robotTypeFromString; parse's std::invalid_argument is rethrown naming the origin, the

@@ -6,6 +6,8 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/terrain/pure_pursuit.hpp"
@@ -58,6 +60,18 @@ std::unique_ptr<terrain::PursuitController> makePursuitController(terrain::Pursu
                                                                   terrain::RobotType type,
                                                                   const TerrainConfig& config,
                                                                   double radius);
+
+/// The gains of both laws for a robot type, by the names config/terrain.yaml and
+/// cfg/PurePursuitController.cfg give them: k_e (terrain/gains/k_e), then the paper law's
+/// (terrain/gains/<type>/...), then the smooth law's (terrain/smooth_gains/<type>/...).
+std::vector<std::pair<std::string, double>> namedPursuitGains(const TerrainConfig& config,
+                                                              terrain::RobotType type);
+
+/// Sets the gain called name (as namedPursuitGains names it) of a robot type; nothing checks the
+/// value, the law's constructor does (makePursuitController).
+/// @throw std::invalid_argument if no gain has that name.
+void setNamedPursuitGain(TerrainConfig& config, terrain::RobotType type, const std::string& name,
+                         double value);
 
 /// @throw std::invalid_argument on an unknown type or bad numbers, or naming the height map's
 /// file and what is wrong with it.

@@ -25,7 +25,7 @@ namespace spherical_robots {
 struct FreebotIkParameters {
   freebot::FreebotChain chain;                 ///< freebot/radii, freebot/trolley/*
   freebot::GoalExecutiveParameters executive;  ///< freebot/{ik,gains,drive,goal}/*
-  double input_timeout = 0.1;        ///< [s] of freebot_state
+  double state_timeout = 0.1;        ///< [s] an older freebot_state (the chain's) is stale
   double max_stamp_skew = 1.0;       ///< [s] a freebot_state stamped further off the clock: rejected
   double max_goal_distance = 100.0;  ///< [m] a goal coordinate beyond it: REJECTED, not planned
   /// The fixed base B_0's frame, <~frame_prefix>link0, in which goals are (Σ I of the paper).

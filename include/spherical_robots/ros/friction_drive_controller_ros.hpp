@@ -26,7 +26,8 @@ namespace spherical_robots {
 /// roller/... and robot_description: loadRollerActuation; docs/nodes.md).
 struct FrictionDriveControllerParameters {
   double max_actuator_rate = 1000.0;  ///< [rad/s] a commanded rate beyond it is rejected
-  double input_timeout = 0.5;         ///< [s] an older drive command is stale
+  /// [s] an older drive command is stale (named as hardware_interface_sim's set-point watchdog)
+  double command_timeout = 0.5;
 };
 
 /// @throw std::invalid_argument naming the parameter, its value and its limit.

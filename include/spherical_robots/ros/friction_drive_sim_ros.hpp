@@ -28,7 +28,7 @@ struct FrictionDriveSimParameters {
   std::string frame_prefix;           ///< of the markers' heading frame
   double marker_rate = 20.0;          ///< [Hz] of roller_markers
   double max_actuator_rate = 1000.0;  ///< [rad/s] a measured rate beyond it is rejected
-  double input_timeout = 0.5;         ///< [s] an older actuator state is stale
+  double state_timeout = 0.5;         ///< [s] an older actuator state is stale
 };
 
 /// @throw std::invalid_argument naming the parameter, its value and its limit.

@@ -30,7 +30,7 @@ struct NormaControllerParameters {
   norma::EffortLimits limits;
   double publish_rate = 50.0;   ///< [Hz] of tracking_error and target
   double max_stamp_skew = 1.0;  ///< [s] joint_states or odom stamped further from the clock: rejected
-  double input_timeout = 0.05;  ///< [s] older joint states, odometry and actuator states are stale
+  double state_timeout = 0.05;  ///< [s] older joint states, odometry and actuator states are stale
   /// The frame of the odometry it reads, in which the path is (the stack's <prefix>odom).
   std::string odom_frame = "odom";
 };

@@ -3,6 +3,7 @@
 // teleoperation mode.
 
 #include <diagnostic_updater/diagnostic_updater.h>
+#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Path.h>
 #include <nav_msgs/Odometry.h>
@@ -16,7 +17,9 @@
 #include <set>
 #include <string>
 
+#include "spherical_robots/PurePursuitControllerConfig.h"
 #include "spherical_robots/config/parameter_source.hpp"
+#include "spherical_robots/config/terrain_config.hpp"
 #include "spherical_robots/ros/terrain_conversions.hpp"
 #include "spherical_robots/core/clock_jump.hpp"
 #include "spherical_robots/core/input_health.hpp"
@@ -57,8 +60,10 @@ struct PurePursuitControllerParameters {
   /// <prefix>odom); odometry in another frame is rejected, a path in another frame transformed.
   std::string odom_frame = "odom";
   double rate = 50.0;              ///< [Hz] of actuators/command
-  /// [s] an older odom (ROS time) or cmd_vel (wall time) is stale: the command is zero.
-  double input_timeout = 0.5;
+  /// [s] of ROS time: an older odom (tracking: the command is zero) or RS joint_states is stale.
+  double state_timeout = 0.5;
+  /// [s] of wall time: an older cmd_vel (teleop: a person's commands) is stale, the command zero.
+  double cmd_vel_timeout = 0.5;
   double max_position = 1e3;       ///< [m] an odom position beyond it is rejected
   double max_cmd_vel = 10.0;       ///< [m/s, rad/s] a cmd_vel field beyond it is rejected
   double max_stamp_skew = 1.0;     ///< [s] odom or joint_states stamped further from the clock is rejected
@@ -69,6 +74,16 @@ struct PurePursuitControllerParameters {
 /// @throw std::invalid_argument naming the parameter, its value and its limit.
 PurePursuitControllerParameters loadPurePursuitControllerParameters(
     const config::ParameterSource& node);
+
+/// The law and a robot type's gains as dynamic_reconfigure shows them
+/// (cfg/PurePursuitController.cfg, whose gains are config::namedPursuitGains').
+/// @throw std::invalid_argument naming a parameter of the .cfg that is no pursuit gain.
+spherical_robots::PurePursuitControllerConfig reconfigureConfigOf(
+    terrain::PursuitLaw law, const config::TerrainConfig& terrain, terrain::RobotType type);
+/// terrain with type's gains as config has them; nothing is checked (the law's constructor does).
+/// @throw std::invalid_argument naming a parameter of the .cfg that is no pursuit gain.
+config::TerrainConfig withReconfiguredGains(const spherical_robots::PurePursuitControllerConfig& config,
+                                            config::TerrainConfig terrain, terrain::RobotType type);
 
 /// The terrain stack's controller: tracks a path of config/terrain.yaml or a received
 /// nav_msgs/Path with a pursuit law, or maps a person's cmd_vel onto the robot type's drive
@@ -109,6 +124,9 @@ class PurePursuitControllerRos {
   terrain::DriveRates teleop();
   /// Logs once per field that cmd_vel asks for something this robot cannot do.
   void warnIgnoredOnce(const std::vector<std::string>& fields);
+  /// dynamic_reconfigure (tracking mode): the law built anew with the new gains, through the
+  /// same checks as at start-up; a refused change keeps the last good law and hands it back.
+  void onReconfigure(spherical_robots::PurePursuitControllerConfig& config, std::uint32_t level);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
   void reportPath(diagnostic_updater::DiagnosticStatusWrapper& status);
 
@@ -124,7 +142,11 @@ class PurePursuitControllerRos {
   double radius_;
   std::unique_ptr<terrain::Surface> surface_;
   std::unique_ptr<terrain::BodyFrame> body_frame_;  ///< odometry's pose to the contact geometry
+  config::TerrainConfig terrain_config_;  ///< the stack's terrain/..., with the gains in use
+  terrain::PursuitLaw law_;                ///< in use: ~law, or as reconfigured since
   std::unique_ptr<terrain::PursuitController> controller_;
+  std::string reconfigure_problem_;  ///< why the last refused reconfiguration was refused
+  std::unique_ptr<dynamic_reconfigure::Server<spherical_robots::PurePursuitControllerConfig>> reconfigure_;
   // Tracking mode: the path followed (null with ~path topic until one arrives) and its tracker.
   std::unique_ptr<terrain::ReferencePath> path_;
   std::string path_origin_;  ///< where path_ came from, for the log and /diagnostics

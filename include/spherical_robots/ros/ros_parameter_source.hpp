@@ -24,6 +24,8 @@ class RosParameterSource final : public config::ParameterSource {
   std::optional<std::vector<std::string>> keys(const std::string& key) const override;
   /// The namespace, e.g. "/sphere" or "/sphere/terrain_plant".
   std::string origin() const override;
+  /// ROS_WARN: on the console and /rosout.
+  void warn(const std::string& message) const override;
 
   /// The fully resolved name of key, for error messages.
   std::string resolve(const std::string& key) const;

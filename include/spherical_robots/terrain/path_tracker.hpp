@@ -24,6 +24,10 @@ class PathTracker {
   /// The law, path and surface must outlive the tracker (the path until another replaces it).
   PathTracker(const PursuitController& law, const ReferencePath& path, const Surface& surface);
 
+  /// Commands with `law` from the next command on (new gains, or the other law), the path and its
+  /// clock unchanged. `law` must outlive the tracker or the next setLaw().
+  void setLaw(const PursuitController& law);
+
   /// Follows `path` from now on, a path received at `received` [ns] whose first point is stamped
   /// `first_stamp` [ns]: its clock starts at first_stamp if that is after `received` (until then
   /// the desired point holds the path's start, at rest); otherwise at the next command, as the
@@ -41,11 +45,11 @@ class PathTracker {
   void shiftStart(double jump);
 
   bool started() const { return started_; }
-  const PursuitController& law() const { return law_; }
+  const PursuitController& law() const { return *law_; }
   const ReferencePath& path() const { return *path_; }
 
  private:
-  const PursuitController& law_;
+  const PursuitController* law_;
   const ReferencePath* path_;
   const Surface& surface_;
   bool started_ = false;

@@ -67,7 +67,7 @@ struct StackSampling {
   double publish_rate = 50.0;      ///< terrain_plant ~publish_rate [Hz]: odom, terrain_state
   double state_timeout = 0.5;      ///< terrain_plant ~state_timeout [s]: actuator states
   double control_rate = 50.0;      ///< pure_pursuit_controller ~rate [Hz]
-  double input_timeout = 0.5;      ///< pure_pursuit_controller ~input_timeout [s]: odom
+  double controller_state_timeout = 0.5;  ///< pure_pursuit_controller ~state_timeout [s]: odom
   double hardware_rate = 100.0;    ///< hardware_interface ~rate [Hz]
   double max_velocity = 20.0;      ///< hardware_interface ~max_velocity [rad/s]
   double max_acceleration = 50.0;  ///< hardware_interface ~max_acceleration [rad/s^2]
