@@ -7,7 +7,8 @@ params: ~ns (the stack's namespace, sphere), ~rviz_config, ~robot_frames (the fr
 must show: [<ns>/base_link]), ~robot_radius (their radius, 0.2 m), ~robot_reference ("ring": the
 robot is judged against the scene around it, for a terrain; "background": against the panel's
 plain background colour), ~min_terrain_fraction (0.2; 0 for a stack without a terrain mesh),
-~min_path_pixels (300), ~min_trail_pixels (80), ~shot_window ([12, 22] s of bag time). Checks:
+~min_path_pixels (300), ~min_trail_pixels (80), ~shot_window ([12, 22] s of bag time), ~bag (the
+bag played). Checks:
   1. /<ns>/rviz subscribes to every topic its rviz config names (tf, tf_static, terrain_marker,
      desired_path, trail, planned_path, freebot_markers, ...): only the config names these, so
      the config was loaded;
@@ -18,7 +19,10 @@ plain background colour), ~min_terrain_fraction (0.2; 0 for a stack without a te
   3. rviz is rendering live: a second screenshot differs from the first;
   4. after the bag loops (simulated time jumps back to its start), the same screenshot checks pass
      again: rviz cleared its tf buffer and redrew from the replayed messages, no stale tf;
-  5. no ERROR from rviz on /rosout (rostest runs no rosout node, hence no /rosout_agg; what rviz
+  5. a subscriber to /tf_static that comes once the bag plays still gets every static transform of
+     the bag (rosbag play latches only the last /tf_static message; scripts/replay_latched.py
+     offers them merged);
+  6. no ERROR from rviz on /rosout (rostest runs no rosout node, hence no /rosout_agg; what rviz
      logs before this node subscribes, in its first second, is not seen). The jump's "Detected
      jump back in time ... Clearing TF buffer" WARN is expected and counted.
 A robot frame is located by projecting its tf position with the Orbit camera of the rviz config
@@ -38,6 +42,7 @@ import time
 import unittest
 
 import numpy as np
+import rosbag
 import rosgraph
 import rosgraph.names
 import rospy
@@ -403,7 +408,43 @@ class ReplayRvizCheck(unittest.TestCase):
         image, robots, path = self.shot_of_panel('after_loop', self.jumps + 1)
         self.check_shot(image, robots, path)
 
-    def test_04_no_rviz_errors(self):
+    def test_04_late_subscriber_gets_every_static_transform(self):
+        """What a subscription made now receives from latched publishers, before the bag loops
+        (at a loop rosbag publishes /tf_static again, which would hide a missing latch): tried
+        again on a new subscription if a loop comes first."""
+        with rosbag.Bag(rospy.get_param('~bag')) as bag:
+            recorded = {(t.header.frame_id, t.child_frame_id)
+                        for _, msg, _ in bag.read_messages(topics=['/tf_static'])
+                        for t in msg.transforms}
+        self.assertGreater(self.bag_time(), 1.0, 'the bag has not played past its first second')
+        for attempt in range(3):
+            received = set()
+            lock = threading.Lock()
+            jumps = self.jumps
+
+            def on_static(msg):
+                with lock:
+                    if self.jumps == jumps:
+                        received.update((t.header.frame_id, t.child_frame_id)
+                                        for t in msg.transforms)
+
+            def all_received():
+                with lock:
+                    return recorded <= received
+            subscriber = rospy.Subscriber('/tf_static', TFMessage, on_static, queue_size=100)
+            try:
+                wait_until(lambda: all_received() or self.jumps != jumps,
+                           'every static transform of the bag %s on a new /tf_static '
+                           'subscription' % sorted(recorded), 5.0)
+            finally:
+                subscriber.unregister()
+            rospy.loginfo('%s: a late /tf_static subscriber got %s (attempt %d)', NAME,
+                          sorted(received), attempt + 1)
+            if all_received():
+                return
+        self.fail('the bag looped during each of 3 attempts')
+
+    def test_05_no_rviz_errors(self):
         time.sleep(1.0)  # let /rosout catch up
         jumps = [w for w in self.rviz_warnings if 'jump back in time' in w]
         rospy.loginfo('%s: %d loops seen on /clock; rviz warned %d times of a jump back in time',
