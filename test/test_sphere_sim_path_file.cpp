@@ -3,7 +3,8 @@
 // the circle sent as a nav_msgs/Path: test/terrain_path_topic.test); the hand-made S-curve of
 // config/paths/s_curve.csv tracked by every robot type within the built-in paths' bounds
 // (test_terrain_tracking); an untimed line followed at --speed, and a timed file at its own
-// times, against closed forms; bad files rejected naming their line, and the usage errors.
+// times, against closed forms; bad files rejected naming their line, and the usage errors; a
+// misspelt key of config/terrain.yaml warned of with its line.
 
 #include <gtest/gtest.h>
 
@@ -159,6 +160,30 @@ TEST_F(SphereSimPathFileTest, BadFilesAreRejectedNamingTheirLine) {
   const Result missing = terrain("--robot 3R --path-file " + (dir_ / "no_such.csv").string());
   EXPECT_EQ(missing.status, 4);
   EXPECT_NE(missing.err.find("cannot be read"), std::string::npos) << missing.err;
+}
+
+TEST_F(SphereSimPathFileTest, AConfigKeyThatNothingReadsIsWarnedOfWithItsLine) {
+  const Result shipped = terrain("--robot 3R --path circle --duration 1");
+  EXPECT_EQ(shipped.status, 0) << shipped.err;
+  EXPECT_EQ(shipped.err, "");  // every key of the shipped file is a parameter
+  const fs::path config = dir_ / "misspelt";
+  fs::create_directories(config);
+  fs::copy(SPHERICAL_ROBOTS_SOURCE_DIR "/config", config / "config", fs::copy_options::recursive);
+  fs::copy(SPHERICAL_ROBOTS_SOURCE_DIR "/urdf", config / "urdf", fs::copy_options::recursive);
+  std::string yaml = sphere_sim_test::readFile(config / "config/terrain.yaml");
+  const std::size_t at = yaml.find("    amplitude:");
+  ASSERT_NE(at, std::string::npos);
+  yaml.replace(at, 14, "    amplitud: ");
+  std::ofstream(config / "config/terrain.yaml") << yaml;
+  const int line = 1 + static_cast<int>(std::count(yaml.begin(), yaml.begin() + at, '\n'));
+  const sphere_sim_test::Process misspelt =
+      run({"terrain", "--robot", "3R", "--path", "circle", "--duration", "1", "--config",
+           config.string(), "--out", out_.string()});
+  EXPECT_EQ(misspelt.status, 0) << misspelt.err;
+  EXPECT_NE(misspelt.err.find("terrain.yaml line " + std::to_string(line) +
+                              ": 'terrain/surface/amplitud' is no parameter"),
+            std::string::npos)
+      << misspelt.err;
 }
 
 TEST_F(SphereSimPathFileTest, PathOptionsThatDoNotFitAreUsageErrors) {

@@ -213,6 +213,69 @@ TEST(YamlParameterSource, ReadsNestedKeysAndReportsAbsentOnes) {
   EXPECT_EQ(src.origin(), file.path());
 }
 
+TEST(YamlParameterSource, NamesTheLineOfABadValue) {
+  const TempYaml file("a:\n  b: 1\n  c: twelve\n");
+  EXPECT_INVALID_ARGUMENT(YamlParameterSource(file.path()).number("a/c"), file.path() + " line 3",
+                          "'a/c'", "twelve");
+}
+
+TEST(YamlParameterSource, RefusesAKeyGivenTwiceWhoseLaterValueWouldBeIgnored) {
+  // yaml-cpp keeps both and reads the first; the author of the second meant it.
+  const TempYaml top("a: 1\nb: 2\na: 3\n");
+  EXPECT_INVALID_ARGUMENT(YamlParameterSource{top.path()}, top.path() + " line 3", "'a'", "twice");
+  const TempYaml nested("a:\n  list:\n    - {x: 1, x: 2}\n");
+  EXPECT_INVALID_ARGUMENT(YamlParameterSource{nested.path()}, "line 3", "'a/list/x'", "twice");
+}
+
+TEST(YamlParameterSource, RefusesATopLevelThatIsNoDictionary) {
+  const TempYaml list("- 1\n- 2\n");
+  EXPECT_INVALID_ARGUMENT(YamlParameterSource{list.path()}, list.path(), "top level", "dictionary");
+}
+
+TEST(YamlParameterSource, WarnsOfAnEmptyFile) {
+  const TempYaml empty("# only a comment\n");
+  std::string warning;
+  const YamlParameterSource src(empty.path(), [&](const std::string& w) { warning = w; });
+  EXPECT_NE(warning.find(empty.path()), std::string::npos) << warning;
+  EXPECT_NE(warning.find("no parameters"), std::string::npos) << warning;
+  EXPECT_FALSE(src.number("a").has_value());
+}
+
+TEST(YamlParameterSource, RefusesAValueWhereAKeyNeedsADictionary) {
+  // terrain/surface: 3 would otherwise leave every surface parameter at its default.
+  const TempYaml file("terrain:\n  surface: 3\n");
+  EXPECT_INVALID_ARGUMENT(YamlParameterSource(file.path()).number("terrain/surface/amplitude"),
+                          file.path() + " line 2", "'terrain/surface'", "dictionary");
+  EXPECT_INVALID_ARGUMENT(loadTerrainConfig(YamlParameterSource(file.path())), "terrain/surface");
+}
+
+TEST(YamlParameterSource, ListsTheKeysNothingReadWithTheirLines) {
+  const TempYaml file("a:\n  b: 1\n  typo: 2\n  list: [1, 2]\n  nested:\n    c: x\nd: 4\n");
+  const YamlParameterSource src(file.path());
+  src.number("a/b");
+  src.numbers("a/list");
+  src.number("a/absent");
+  auto keys = [](const std::vector<YamlParameterSource::Key>& unread) {
+    std::vector<std::string> text;
+    for (const auto& k : unread) text.push_back(k.key + ":" + std::to_string(k.line));
+    return text;
+  };
+  EXPECT_EQ(keys(src.unreadKeys("")), (std::vector<std::string>{"a/typo:3", "a/nested/c:6", "d:7"}));
+  EXPECT_EQ(keys(src.unreadKeys("a/nested")), (std::vector<std::string>{"a/nested/c:6"}));
+  src.text("a/nested/c");
+  EXPECT_TRUE(src.gives("d"));
+  EXPECT_EQ(keys(src.unreadKeys("")), (std::vector<std::string>{"a/typo:3", "d:7"}));
+}
+
+TEST(YamlParameterSource, TheLoadersReadEveryKeyOfTheShippedTerrainFileButTheStacksOwn) {
+  // What sphere_sim terrain's warning of unused parameters relies on: nothing else is left.
+  const YamlParameterSource src(SPHERICAL_ROBOTS_SOURCE_DIR "/config/terrain.yaml");
+  loadTerrainConfig(src);
+  std::vector<std::string> unread;
+  for (const auto& k : src.unreadKeys("")) unread.push_back(k.key);
+  EXPECT_EQ(unread, (std::vector<std::string>{"pure_pursuit_controller/untimed_speed"}));
+}
+
 // ------------------------------------------------------------------------------------------
 // Factories.
 
@@ -371,6 +434,15 @@ TEST(SphereRadiusFromUrdf, RejectsWhatIsNotAPositiveSphere) {
   EXPECT_THROW(sphereRadiusFromUrdf("<robot name=\"r\"><link name=\"shell\">", "shell"), std::invalid_argument);
   EXPECT_THROW(sphereRadiusFromUrdf("not xml at all", "shell"), std::invalid_argument);
   EXPECT_THROW(sphereRadiusFromUrdf("", "shell"), std::invalid_argument);
+}
+
+TEST(SphereRadiusFromUrdf, GivesUrdfdomsReasonForWhatItRejects) {
+  // urdfdom drops a geometry it cannot read and still returns the model: its reason is the error.
+  EXPECT_INVALID_ARGUMENT(
+      sphereRadiusFromUrdf(urdfWith(geometry("collision", "<sphere radius=\"nan\"/>")), "shell"),
+      "not a valid URDF", "radius [nan] is not a valid float");
+  EXPECT_INVALID_ARGUMENT(sphereRadiusFromUrdf("<robot name=\"r\"></robot>", "shell"),
+                          "not a valid URDF", "No link elements");
 }
 
 }  // namespace

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <urdf_parser/urdf_parser.h>
 
 #include "spherical_robots/config/robot_description.hpp"
+#include "spherical_robots/config/urdf_model.hpp"
 
 namespace spherical_robots::config {
 namespace {
@@ -40,8 +40,7 @@ urdf::InertialSharedPtr requireInertial(const urdf::ModelInterface& model,
 }  // namespace
 
 norma::NormaParameters normaParametersFromUrdf(const std::string& urdf_xml) {
-  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf_xml);
-  if (!model) throw std::invalid_argument("Norma URDF: the XML does not parse");
+  const urdf::ModelInterfaceSharedPtr model = parseUrdf(urdf_xml, "Norma URDF");
   requireJoint(*model, "tilt_joint", 1, 0, 0);
   requireJoint(*model, "shell_joint", 0, 1, 0);
   const auto pendulum_joint = requireJoint(*model, "pendulum_joint", 0, -1, 0);

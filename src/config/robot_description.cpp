@@ -5,13 +5,12 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <urdf_parser/urdf_parser.h>
+#include "spherical_robots/config/urdf_model.hpp"
 
 namespace spherical_robots::config {
 
 double sphereRadiusFromUrdf(const std::string& urdf_xml, const std::string& link) {
-  const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf_xml);
-  if (!model) throw std::invalid_argument("robot description: the URDF does not parse");
+  const urdf::ModelInterfaceSharedPtr model = parseUrdf(urdf_xml, "robot description");
   const urdf::LinkConstSharedPtr found = model->getLink(link);
   if (!found) {
     throw std::invalid_argument("robot description '" + model->getName() + "' has no link '" +

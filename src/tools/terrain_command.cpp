@@ -1,5 +1,6 @@
 #include "terrain_command.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -122,8 +123,30 @@ number, missing option, neither or both of --path and --path-file, --speed witho
 or log period not a whole number of steps, unreadable config, a bad --path-file, named with its
 line, a radius that breaks single-point contact, a run that diverges or leaves the height map):
 one-line error on stderr and no output file. An 8-bit height map is smoothed, with a warning on
-stderr.
+stderr; so is a key of config/terrain.yaml (or roller.yaml) that is no parameter of the stack (a
+misspelt one would leave its default in place), named with its line.
 )";
+
+// What the terrain stack's nodes read from config/terrain.yaml and sphere_sim terrain does not:
+// the run has an option instead.
+const char* const kStackOnlyParameters[] = {"pure_pursuit_controller/untimed_speed"};  // --speed
+
+/// A parameter that nothing read: a misspelt key would otherwise leave its default in place
+/// without a word. files: the layers, lowest first; a key that a higher layer gives is read there.
+void warnOfUnusedParameters(const std::vector<const config::YamlParameterSource*>& files) {
+  for (auto file = files.begin(); file != files.end(); ++file) {
+    for (const config::YamlParameterSource::Key& unused : (*file)->unreadKeys("")) {
+      const auto stack_only = std::find(std::begin(kStackOnlyParameters),
+                                        std::end(kStackOnlyParameters), unused.key);
+      const bool overridden = std::any_of(file + 1, files.end(), [&](const auto* higher) {
+        return higher->gives(unused.key);
+      });
+      if (stack_only != std::end(kStackOnlyParameters) || overridden) continue;
+      std::cerr << "warning: " << (*file)->origin() << " line " << unused.line << ": '"
+                << unused.key << "' is no parameter of the terrain stack (misspelt?); ignored\n";
+    }
+  }
+}
 
 }  // namespace
 
@@ -157,11 +180,14 @@ TerrainRun::TerrainRun(const TerrainRunSettings& settings) : settings_(settings)
 
   // The parameters as the stack's nodes see them: config/roller.yaml loaded over terrain.yaml.
   std::vector<std::unique_ptr<config::ParameterSource>> layers;
-  layers.push_back(std::make_unique<config::YamlParameterSource>(settings.config_dir +
-                                                                 "/config/terrain.yaml"));
-  if (settings.stack == "roller")
-    layers.push_back(std::make_unique<config::YamlParameterSource>(settings.config_dir +
-                                                                   "/config/roller.yaml"));
+  std::vector<const config::YamlParameterSource*> files;
+  for (const std::string name : {"terrain", "roller"}) {
+    if (name == "roller" && settings.stack != "roller") continue;
+    auto file = std::make_unique<config::YamlParameterSource>(settings.config_dir + "/config/" +
+                                                              name + ".yaml");
+    files.push_back(file.get());
+    layers.push_back(std::move(file));
+  }
   const config::LayeredParameterSource parameters(std::move(layers));
   const config::TerrainConfig scenario = config::loadTerrainConfig(parameters);
   const double radius = radiusFromUrdf(settings.config_dir + "/urdf/terrain_robot.urdf", "shell");
@@ -199,6 +225,7 @@ TerrainRun::TerrainRun(const TerrainRunSettings& settings) : settings_(settings)
     sampling_.actuator_models = models.models;
     sampling_.noise_seed = models.noise_seed;
   }
+  warnOfUnusedParameters(files);
 }
 
 template <typename Step, typename RowAt>
