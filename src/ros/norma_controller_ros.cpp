@@ -198,8 +198,7 @@ void NormaControllerRos::control(const sensor_msgs::JointState& msg) {
                                                       "is built for <= 2 ms (lower the speed-up)");
   }
 
-  if (periodDue(last_publish_, now, 1.0 / parameters_.publish_rate)) {
-    last_publish_ = now;
+  if (publication_.take(nanosecondsOf(now))) {
     const norma::PathPoint reference = loop_.reference(now.toSec());
     const double zeta = norma::kinematicLayer(controller().gains().kinematic, robot_.R, measured.x,
                                               measured.y, measured.psi, reference).zeta;

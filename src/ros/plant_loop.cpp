@@ -61,10 +61,7 @@ std::vector<std::string> PlantLoop::tick(const ros::Time& now) {
   const bool fresh = actuator_input_.fresh(now);
   timeline_.tick(now, [&](double elapsed) { model_->advance(elapsed, fresh); });
   model_->publishEveryStep(now, fresh);
-  if (periodDue(last_publish_, now, 1.0 / parameters_.publish_rate)) {
-    last_publish_ = now;
-    model_->publishPeriodic(now, fresh);
-  }
+  if (publication_.take(nanosecondsOf(now))) model_->publishPeriodic(now, fresh);
   if (trail_ && trail_->due(now)) {
     if (const std::optional<PlantModel::Pose> pose = model_->trailPose())
       trail_->add(now, pose->position, pose->orientation);

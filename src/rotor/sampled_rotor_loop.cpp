@@ -70,8 +70,7 @@ void SampledRotorLoop::step() {
     state_ = advancePlant(sampling_.k, inertia_scale, state_, driving_, tick.elapsed,
                           sampling_.plant_step);
   }
-  if (periodDue(last_publish_, now_, 1.0 / sampling_.publish_rate)) {
-    last_publish_ = now_;
+  if (publication_.take(now_)) {
     // odom carries the attitude normalised (rotor_plant); the planner normalises
     // what it reads again (conversions::fromQuaternion).
     const Eigen::Quaterniond sent =

@@ -73,8 +73,7 @@ void SampledTerrainLoop::step() {
     state_ = next.state;
     orientation_ = next.orientation;
   }
-  if (periodDue(last_publish_, now_, 1.0 / sampling_.publish_rate)) {
-    last_publish_ = now_;
+  if (publication_.take(now_)) {
     // The controller sees odom (the body's pose) and, for RS, joint_states (the tilt), and
     // recovers the contact geometry from them through the terrain model.
     received_tilt_ = state_.phi;

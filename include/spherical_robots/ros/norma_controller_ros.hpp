@@ -15,6 +15,7 @@
 
 #include "spherical_robots/NormaControllerConfig.h"
 #include "spherical_robots/config/parameter_source.hpp"
+#include "spherical_robots/core/periodic_schedule.hpp"
 #include "spherical_robots/norma/norma_control_loop.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/lockstep_participant.hpp"
@@ -71,7 +72,7 @@ class NormaControllerRos {
   NormaControllerParameters parameters_;
   norma::NormaParameters robot_;
   norma::NormaControlLoop loop_;
-  ros::Time last_publish_;
+  PeriodicSchedule publication_{1.0 / parameters_.publish_rate};
   double max_state_age_ = 0.0;         ///< [s] since the last report: ROS time a state waited
   unsigned long late_commands_ = 0;    ///< commands sent more than kLateAge after their state
   std::optional<norma::NormaMeasurement> pose_;  ///< X, Y, psi of the last good odom

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "spherical_robots/config/plant_loop_parameters.hpp"
+#include "spherical_robots/core/periodic_schedule.hpp"
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/loop_publishers.hpp"
@@ -103,7 +104,7 @@ class PlantLoop {
   TfPublisher tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;  ///< map -> the root frame
   std::optional<Trail> trail_;
-  ros::Time last_publish_;
+  PeriodicSchedule publication_{1.0 / parameters_.publish_rate};
   double rate_tolerance_;
   std::string state_topic_;
   std::unique_ptr<TopicRate> state_rate_;

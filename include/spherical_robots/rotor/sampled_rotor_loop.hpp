@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "spherical_robots/core/loop_timeline.hpp"
+#include "spherical_robots/core/periodic_schedule.hpp"
 #include "spherical_robots/core/stamp.hpp"
 #include "spherical_robots/hardware/simulated_actuators.hpp"
 #include "spherical_robots/rotor/manoeuvre_executive.hpp"
@@ -85,7 +86,7 @@ class SampledRotorLoop {
   RotorSpeeds measured_;          ///< the last actuator state read
   Nanoseconds measured_at_ = 0;   ///< 0: never
   RotorSpeeds driving_;           ///< what moved the plant in the latest step
-  Nanoseconds last_publish_ = 0;  ///< 0: never
+  PeriodicSchedule publication_{1.0 / sampling_.publish_rate};
   // The planner (rotor_planner).
   std::optional<RestMeasurement> rest_;  ///< from the last odometry
   Nanoseconds rest_at_ = 0;

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "spherical_robots/core/loop_timeline.hpp"
+#include "spherical_robots/core/periodic_schedule.hpp"
 #include "spherical_robots/core/stamp.hpp"
 #include "spherical_robots/hardware/simulated_actuators.hpp"
 #include "spherical_robots/terrain/body_frame.hpp"
@@ -130,7 +131,7 @@ class SampledTerrainLoop {
   DriveRates measured_;           ///< the last actuator state read
   Nanoseconds measured_at_ = 0;   ///< when it was read; 0: never
   DriveRates drive_;              ///< what moved the plant in the latest step
-  Nanoseconds last_publish_ = 0;  ///< 0: never
+  PeriodicSchedule publication_{1.0 / sampling_.publish_rate};
   // The controller (pure_pursuit_controller).
   ContactGeometry received_;      ///< from the last odom
   double received_tilt_ = 0.0;
