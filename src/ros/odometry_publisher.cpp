@@ -17,7 +17,10 @@ OdometryPublisher::OdometryPublisher(PlantLoop& loop, const config::OdometryPara
       base_frame_(std::move(base_frame)),
       sensors_(parameters.noise),
       odom_pub_(loop.advertise<nav_msgs::Odometry>("odom")) {
-  if (parameters_.imu_rate > 0.0) imu_pub_ = loop.advertise<sensor_msgs::Imu>("imu");
+  if (parameters_.imu_rate > 0.0) {
+    imu_pub_ = loop.advertise<sensor_msgs::Imu>("imu");
+    imu_schedule_.emplace(1.0 / parameters_.imu_rate);
+  }
 }
 
 void OdometryPublisher::publish(const ros::Time& now, const BodyMotion& truth) {
@@ -25,12 +28,11 @@ void OdometryPublisher::publish(const ros::Time& now, const BodyMotion& truth) {
       conversions::bodyOdometry(sensors_.odometry(truth), parameters_, odom_frame_, base_frame_, now));
 }
 
-bool OdometryPublisher::imuDue(const ros::Time& now) const {
-  return parameters_.imu_rate > 0.0 && periodDue(last_imu_, now, 1.0 / parameters_.imu_rate);
+bool OdometryPublisher::imuDue(const ros::Time& now) {
+  return imu_schedule_ && imu_schedule_->take(nanosecondsOf(now));
 }
 
 void OdometryPublisher::publishImu(const ros::Time& now, const BodyMotion& truth) {
-  last_imu_ = now;
   imu_pub_.publish(conversions::toImu(sensors_.imu(now.toSec(), truth), parameters_, base_frame_, now));
 }
 

@@ -5,9 +5,11 @@
 
 #include <ros/time.h>
 
+#include <optional>
 #include <string>
 
 #include "spherical_robots/config/odometry_parameters.hpp"
+#include "spherical_robots/core/periodic_schedule.hpp"
 #include "spherical_robots/core/simulated_sensors.hpp"
 #include "spherical_robots/ros/plant_loop.hpp"
 
@@ -23,9 +25,9 @@ class OdometryPublisher {
   /// odom of `truth` (pose in the odom frame, twist in the base frame), stamped now.
   void publish(const ros::Time& now, const BodyMotion& truth);
 
-  /// Whether an IMU reading is due at now (never with ~imu_rate 0): the plant then calls
-  /// publishImu, at most once a step.
-  bool imuDue(const ros::Time& now) const;
+  /// Whether an IMU reading is due at now (never with ~imu_rate 0), which counts it as taken: the
+  /// plant then calls publishImu, at most once a step.
+  bool imuDue(const ros::Time& now);
   /// The IMU of `truth` (in the base frame), stamped now.
   void publishImu(const ros::Time& now, const BodyMotion& truth);
 
@@ -39,7 +41,7 @@ class OdometryPublisher {
   SimulatedSensors sensors_;
   LoopPublisher odom_pub_;
   LoopPublisher imu_pub_;
-  ros::Time last_imu_;
+  std::optional<PeriodicSchedule> imu_schedule_;  ///< with ~imu_rate > 0
 };
 
 }  // namespace spherical_robots
