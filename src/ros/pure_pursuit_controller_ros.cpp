@@ -8,8 +8,6 @@
 #include <nav_msgs/Path.h>
 #include <sensor_msgs/JointState.h>
 
-#include <tf2/exceptions.h>
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -25,7 +23,6 @@ namespace {
 constexpr int kDesiredPathSamples = 400;      // a built-in path on desired_path
 constexpr int kSamplesPerPathPoint = 4;       // a received path's, up to
 constexpr int kMaxDesiredPathSamples = 10000;
-constexpr double kPathTfRetryPeriod = 0.05;   // [s] of wall time
 
 }  // namespace
 
@@ -135,12 +132,16 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
       tracker_ = std::make_unique<terrain::PathTracker>(*controller_, *path_, *surface_);
       publishDesiredPath(kDesiredPathSamples);
     }
-    tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_, nh);
-    path_tf_timer_ = nh.createWallTimer(ros::WallDuration(kPathTfRetryPeriod),
-                                        [this](const ros::WallTimerEvent&) { resolvePendingPath(); },
-                                        false, false);
-    // Latched, the last one wins: a new path replaces the one followed.
-    path_sub_ = nh.subscribe("path", 1, &PurePursuitControllerRos::onPath, this);
+    path_reception_ = std::make_unique<PathReception>(
+        nh,
+        PathReception::Parameters{parameters_.odom_frame, parameters_.path_tf_timeout,
+                                  parameters_.max_position, parameters_.untimed_speed},
+        [this] { return now(); },
+        [this](std::unique_ptr<terrain::SampledPath> path, const ros::Time& first_stamp,
+               const ros::Time& received, const std::string& origin) {
+          follow(std::move(path), first_stamp, received, origin);
+        },
+        [this] { return path_ ? path_->describe() : std::string(); }, updater_);
     // The server starts from the law and gains loaded above (config/terrain.yaml), not the .cfg's.
     reconfigure_ =
         std::make_unique<dynamic_reconfigure::Server<spherical_robots::PurePursuitControllerConfig>>(pnh);
@@ -148,7 +149,7 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
     reconfigure_->setCallback([this](spherical_robots::PurePursuitControllerConfig& config,
                                      std::uint32_t level) { onReconfigure(config, level); });
     ROS_INFO_STREAM("Tracking " << (path_ ? path_->describe() : "nothing until a path arrives")
-                                << " (a nav_msgs/Path on " << path_sub_.getTopic()
+                                << " (a nav_msgs/Path on " << path_reception_->topic()
                                 << " replaces it) on " << surface_->describe() << " with a "
                                 << terrain::toString(parameters_.robot_type)
                                 << " sphere, R = " << radius_ << " m");
@@ -224,60 +225,6 @@ ros::Time PurePursuitControllerRos::inputTime(const ros::Time& stamp) const {
   return lockstep_ ? stamp : ros::Time::now();
 }
 
-void PurePursuitControllerRos::onPath(const ros::MessageEvent<const nav_msgs::Path>& event) {
-  // The last one wins: a path still waiting for tf gives way to a newer one, and is counted as
-  // refused (a sender streaming paths in an unknown frame shows on /diagnostics).
-  if (pending_path_) {
-    refusePath("replaced by a newer path while waiting for a transform from frame '" +
-               pending_path_->msg->header.frame_id + "'");
-  }
-  pending_path_ = PendingPath{event.getConstMessage(), event.getPublisherName(), now(),
-                              ros::WallTime::now()};
-  resolvePendingPath();
-}
-
-void PurePursuitControllerRos::resolvePendingPath() {
-  if (!pending_path_) return;
-  const nav_msgs::Path& msg = *pending_path_->msg;
-  const std::string& frame = msg.header.frame_id;
-  try {
-    if (frame.empty()) {
-      throw std::invalid_argument("header.frame_id is empty; the controller's frame is '" +
-                                  parameters_.odom_frame + "' (~odom_frame)");
-    }
-    Eigen::Isometry3d to_odom = Eigen::Isometry3d::Identity();
-    if (frame != parameters_.odom_frame) {
-      std::string tf_error;
-      if (!tf_buffer_.canTransform(parameters_.odom_frame, frame, msg.header.stamp, &tf_error)) {
-        const double waited = (ros::WallTime::now() - pending_path_->arrived).toSec();
-        if (waited < parameters_.path_tf_timeout) {
-          path_tf_timer_.start();
-          return;
-        }
-        std::ostringstream problem;
-        problem << "no transform from frame '" << frame << "' to '" << parameters_.odom_frame << "' at "
-                << msg.header.stamp.toSec() << " s after " << waited << " s (path_tf_timeout "
-                << parameters_.path_tf_timeout << " s): " << tf_error;
-        throw std::invalid_argument(problem.str());
-      }
-      to_odom = conversions::fromTransform(
-          tf_buffer_.lookupTransform(parameters_.odom_frame, frame, msg.header.stamp).transform,
-          "transform from '" + frame + "'");
-    }
-    auto path = std::make_unique<terrain::SampledPath>(terrain::SampledPath::fromStamped(
-        conversions::stampedPointsFromPath(msg, to_odom, parameters_.max_position),
-        parameters_.untimed_speed));
-    follow(std::move(path), msg.poses.front().header.stamp, pending_path_->received,
-           path_sub_.getTopic() + " from " + pending_path_->publisher + " in frame '" + frame + "'");
-  } catch (const std::invalid_argument& e) {
-    refusePath(e.what());
-  } catch (const tf2::TransformException& e) {
-    refusePath(std::string("tf: ") + e.what());
-  }
-  pending_path_.reset();
-  path_tf_timer_.stop();
-}
-
 void PurePursuitControllerRos::follow(std::unique_ptr<terrain::SampledPath> path,
                                       const ros::Time& first_stamp, const ros::Time& received,
                                       const std::string& origin) {
@@ -287,27 +234,11 @@ void PurePursuitControllerRos::follow(std::unique_ptr<terrain::SampledPath> path
       std::min<std::size_t>(kMaxDesiredPathSamples, kSamplesPerPathPoint * path->size()));
   path_ = std::move(path);
   path_origin_ = origin;
-  ++paths_accepted_;
-  path_health_.accepted(ros::WallTime::now().toSec());
   publishDesiredPath(std::max(samples, kDesiredPathSamples));
   ROS_INFO_STREAM("Following a " << path_->describe() << " received on " << origin
                                   << (first_stamp > received ? ", from its first stamp " : ", from ")
                                   << (first_stamp > received ? first_stamp.toSec() : received.toSec())
                                   << " s");
-  updater_.force_update();
-}
-
-void PurePursuitControllerRos::refusePath(const std::string& reason) {
-  const nav_msgs::Path& msg = *pending_path_->msg;
-  ++paths_refused_;
-  path_health_.rejected(ros::WallTime::now().toSec(), reason);
-  ROS_ERROR_STREAM("Refusing the path on " << path_sub_.getTopic() << " from "
-                                           << pending_path_->publisher << " (" << msg.poses.size()
-                                           << " poses, frame '" << msg.header.frame_id
-                                           << "'): " << reason << "; "
-                                           << (path_ ? "keeping the " + path_->describe()
-                                                     : std::string("no path: the robot stays at rest")));
-  updater_.force_update();
 }
 
 void PurePursuitControllerRos::publishDesiredPath(int samples) {
@@ -427,7 +358,9 @@ void PurePursuitControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrap
   if (parameters_.mode == Mode::Tracking) {
     status.add("law", terrain::toString(law_));
     if (!reconfigure_problem_.empty()) status.add("last refused reconfiguration", reconfigure_problem_);
-    reportPath(status);
+    status.add("path", path_ ? path_->describe() : "none");
+    status.add("path from", path_ ? path_origin_ : "nothing yet: waiting on " + path_reception_->topic());
+    path_reception_->report(status, path_ != nullptr);
     status.add("|e_t| [m]", error_.norm);
     status.add("zeta [rad]", error_.zeta);
   }
@@ -437,28 +370,6 @@ void PurePursuitControllerRos::diagnose(diagnostic_updater::DiagnosticStatusWrap
   status.add("command failures", failures_);
   input_.report(status, now());
   if (parameters_.robot_type == terrain::RobotType::RollingAndSteering) tilt_input_.report(status, now());
-}
-
-void PurePursuitControllerRos::reportPath(diagnostic_updater::DiagnosticStatusWrapper& status) {
-  using diagnostic_msgs::DiagnosticStatus;
-  const std::string& topic = path_sub_.getTopic();
-  status.add("path", path_ ? path_->describe() : "none");
-  status.add("path from", path_ ? path_origin_ : "nothing yet: waiting on " + topic);
-  status.add(topic + " accepted", paths_accepted_);
-  status.add(topic + " refused", paths_refused_);
-  if (!path_health_.lastReason().empty()) status.add(topic + " last refusal", path_health_.lastReason());
-  if (!path_) {
-    // At rest: with a refused path that is an error of the sender's, otherwise the wait for one.
-    status.mergeSummary(paths_refused_ > 0 ? DiagnosticStatus::ERROR : DiagnosticStatus::WARN,
-                        paths_refused_ > 0 ? "path refused, none to follow: " + path_health_.lastReason()
-                                           : "waiting for a path on " + topic);
-    return;
-  }
-  const HealthLevel level = path_health_.level(ros::WallTime::now().toSec());
-  if (level != HealthLevel::kOk) {
-    status.mergeSummary(statusLevel(level), "path refused on " + topic + " (keeping the last good one): " +
-                                                path_health_.lastReason());
-  }
 }
 
 }  // namespace spherical_robots

@@ -9,8 +9,6 @@
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/JointState.h>
 #include <ros/ros.h>
-#include <tf2_ros/buffer.h>
-#include <tf2_ros/transform_listener.h>
 
 #include <memory>
 #include <optional>
@@ -22,7 +20,6 @@
 #include "spherical_robots/config/terrain_config.hpp"
 #include "spherical_robots/ros/terrain_conversions.hpp"
 #include "spherical_robots/core/clock_jump.hpp"
-#include "spherical_robots/core/input_health.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/topic_rate.hpp"
 #include "spherical_robots/terrain/body_frame.hpp"
@@ -34,6 +31,7 @@
 #include "spherical_robots/terrain/surface.hpp"
 
 #include "spherical_robots/ros/lockstep_participant.hpp"
+#include "spherical_robots/ros/path_reception.hpp"
 #include "spherical_robots/ros/loop_publishers.hpp"
 #include "spherical_robots/ros/timer_jump_guard.hpp"
 
@@ -103,14 +101,9 @@ class PurePursuitControllerRos {
   void acceptStamp(const ros::Time& stamp, const std::string& topic) const;
   /// When an input stamped `stamp` counts as received.
   ros::Time inputTime(const ros::Time& stamp) const;
-  void onPath(const ros::MessageEvent<const nav_msgs::Path>& event);
-  /// Takes in the path that arrived last, or refuses it: at once, or once its frame has a
-  /// transform to the odometry's frame (waiting up to ~path_tf_timeout of wall time for tf).
-  void resolvePendingPath();
   /// Follows `path` (received at `received`, its first pose stamped `first_stamp`), from `origin`.
   void follow(std::unique_ptr<terrain::SampledPath> path, const ros::Time& first_stamp,
               const ros::Time& received, const std::string& origin);
-  void refusePath(const std::string& reason);
   void publishDesiredPath(int samples);
   void onCmdVel(const geometry_msgs::Twist& msg);
   void onTimer(const ros::TimerEvent& event);
@@ -128,15 +121,6 @@ class PurePursuitControllerRos {
   /// same checks as at start-up; a refused change keeps the last good law and hands it back.
   void onReconfigure(spherical_robots::PurePursuitControllerConfig& config, std::uint32_t level);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
-  void reportPath(diagnostic_updater::DiagnosticStatusWrapper& status);
-
-  /// A received path waiting for its frame's transform.
-  struct PendingPath {
-    nav_msgs::Path::ConstPtr msg;
-    std::string publisher;
-    ros::Time received;            ///< the node's time (now()) when it arrived
-    ros::WallTime arrived;
-  };
 
   PurePursuitControllerParameters parameters_;
   double radius_;
@@ -151,13 +135,6 @@ class PurePursuitControllerRos {
   std::unique_ptr<terrain::ReferencePath> path_;
   std::string path_origin_;  ///< where path_ came from, for the log and /diagnostics
   std::unique_ptr<terrain::PathTracker> tracker_;
-  std::optional<PendingPath> pending_path_;
-  InputHealth path_health_;  ///< refusals of received paths, on wall time
-  unsigned long paths_accepted_ = 0;
-  unsigned long paths_refused_ = 0;
-  tf2_ros::Buffer tf_buffer_;
-  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
-  ros::WallTimer path_tf_timer_;  ///< retries a pending path while it waits for tf
 
   std::optional<terrain::ContactGeometry> geometry_;  ///< from the last good odom
   double tilt_ = 0.0;                                 ///< RS phi from the last good joint_states
@@ -175,7 +152,6 @@ class PurePursuitControllerRos {
   ros::Subscriber odom_sub_;
   ros::Subscriber joint_sub_;  ///< RS only
   ros::Subscriber cmd_vel_sub_;
-  ros::Subscriber path_sub_;
   StepPublications step_publications_;
   LoopPublisher command_pub_;
   LoopPublisher error_pub_;
@@ -184,6 +160,7 @@ class PurePursuitControllerRos {
   TopicRate command_rate_;  ///< actuators/command against ~rate
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
+  std::unique_ptr<PathReception> path_reception_;  ///< tracking mode: paths sent on `path`
   ros::Timer timer_;
   std::unique_ptr<TimerJumpGuard> timer_guard_;  ///< restarts timer_ after a clock jump
   std::unique_ptr<LockstepParticipant> lockstep_;  ///< set instead of timer_ in lock-step
