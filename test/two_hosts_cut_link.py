@@ -58,6 +58,7 @@ STACK_NS = '/sphere'
 SPEED = 1.0             # [m/s] the operator's command
 DIFF_DRIVE_BOUND = 0.8  # [m] travelled after the cut (diff_drive_controller's test)
 WATCHDOG_SLACK = 0.24   # [s] the same bound's latency at 1 m/s, for the time to rest
+EXIT_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
 
 
 class Skip(Exception):
@@ -117,8 +118,10 @@ class TwoHosts:
                            % result.stderr.strip())
             self.namespaces.append(name)
             run('ip', '-n', name, 'link', 'set', 'lo', 'up')
-        run('ip', 'link', 'add', LINK, 'netns', self.robot, 'type', 'veth',
-            'peer', 'name', LINK, 'netns', self.workstation)
+        veth = run('ip', 'link', 'add', LINK, 'netns', self.robot, 'type', 'veth',
+                   'peer', 'name', LINK, 'netns', self.workstation, check=False)
+        if veth.returncode != 0:
+            raise Skip('no veth pair here (ip link add: %s)' % veth.stderr.strip())
         for name, address in ((self.robot, ROBOT_IP), (self.workstation, WORKSTATION_IP)):
             run('ip', '-n', name, 'addr', 'add', address + '/24', 'dev', LINK)
             run('ip', '-n', name, 'link', 'set', LINK, 'up')
@@ -130,12 +133,13 @@ class TwoHosts:
         return env
 
     def start(self, namespace, address, label, *command):
-        log = open(os.path.join(self.logs, label + '.log'), 'w')
-        process = subprocess.Popen(('ip', 'netns', 'exec', namespace) + command,
-                                   env=self.environment(address), stdout=log,
-                                   stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
-                                   start_new_session=True)
-        self.processes.append((label, process))
+        """Runs command in the namespace, its output in label.log."""
+        with open(os.path.join(self.logs, label + '.log'), 'w') as log:
+            process = subprocess.Popen(('ip', 'netns', 'exec', namespace) + command,
+                                       env=self.environment(address), stdout=log,
+                                       stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
+                                       start_new_session=True)
+        self.processes.append(process)
         return process
 
     def wait_for_master(self, timeout):
@@ -151,12 +155,15 @@ class TwoHosts:
 
     def stop(self):
         """SIGINT to everything started (roslaunch shuts its nodes down), then whatever is still
-        in the namespaces is killed and the namespaces deleted."""
-        for _, process in reversed(self.processes):
+        in the namespaces is killed and the namespaces deleted. A second signal must not cut
+        this short."""
+        for signum in EXIT_SIGNALS:
+            signal.signal(signum, signal.SIG_IGN)
+        for process in reversed(self.processes):
             if process.poll() is None:
                 process.send_signal(signal.SIGINT)
         deadline = time.time() + 10
-        for _, process in self.processes:
+        for process in self.processes:
             try:
                 process.wait(timeout=max(0.1, deadline - time.time()))
             except subprocess.TimeoutExpired:
@@ -242,7 +249,7 @@ def two_hosts(cut):
     if not shutil.which('roslaunch') or run('rospack', 'find', 'spherical_robots',
                                               check=False).returncode != 0:
         raise Skip('spherical_robots is not in the environment: `. install/setup.sh` first')
-    for signum in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+    for signum in EXIT_SIGNALS:
         signal.signal(signum, raise_exit)
     remove_stale_namespaces()
     logs = tempfile.mkdtemp(prefix='two_hosts_cut_link.')
