@@ -202,10 +202,10 @@ def check_figures(figures):
     return failures
 
 
-def write_junit(path, seconds, failures, skipped):
+def write_junit(path, seconds, failures, skipped, text):
     body = ('<skipped message="%s"/>' % escape(skipped, {'"': '&quot;'}) if skipped else
             '<failure message="%s"/>' % escape('; '.join(failures), {'"': '&quot;'})
-            if failures else '')
+            if failures else '') + '<system-out>%s</system-out>' % escape(text)
     with open(path, 'w') as f:
         f.write('<?xml version="1.0" encoding="utf-8"?>\n<testsuite name="two_hosts" tests="1" '
                 'failures="%d" errors="0" skipped="%d" time="%.1f"><testcase classname='
@@ -224,9 +224,9 @@ def main(argv):
         return observe(args.workstation_ns, args.cut)
 
     started = time.time()
-    skipped, failures = None, []
+    skipped, failures, text = None, [], ''
     try:
-        failures = two_hosts(args.cut)
+        failures, text = two_hosts(args.cut)
     except Skip as reason:
         skipped = str(reason)
         print('SKIPPED: %s' % skipped)
@@ -235,7 +235,7 @@ def main(argv):
     seconds = time.time() - started
     print('wall time %.1f s' % seconds)
     if args.junit:
-        write_junit(args.junit, seconds, failures, skipped)
+        write_junit(args.junit, seconds, failures, skipped, text)
     for failure in failures:
         print('FAILED: ' + failure)
     return 1 if failures else 0
@@ -257,8 +257,8 @@ def two_hosts(cut):
     failures = ['stopped before its measurements']
     try:
         hosts.create()
-        failures = drive_and_cut(hosts, cut)
-        return failures
+        failures, text = drive_and_cut(hosts, cut)
+        return failures, text
     except Skip:
         failures = []
         raise
@@ -271,7 +271,8 @@ def two_hosts(cut):
 
 
 def drive_and_cut(hosts, cut):
-    """Starts the master, both halves, the operator and the observer; the checks' failures."""
+    """Starts the master, both halves, the operator and the observer: the checks' failures
+    and the report."""
     try:
         hosts.start(hosts.robot, ROBOT_IP, 'roscore', 'roscore', '-p', '11311')
         hosts.wait_for_master(60)
@@ -285,37 +286,40 @@ def drive_and_cut(hosts, cut):
                                '--workstation-ns', hosts.workstation)
         observer.wait(timeout=240)
     except subprocess.TimeoutExpired:
-        return ['the observer did not finish within 240 s']
+        return ['the observer did not finish within 240 s'], ''
     except AssertionError as failure:
-        return [str(failure)]
+        return [str(failure)], ''
     with open(os.path.join(hosts.logs, 'observer.log')) as log:
         lines = log.read().splitlines()
     result = [l for l in lines if l.startswith('{')]
     if observer.returncode != 0 or not result:
         return ['the observer failed (exit %s):\n  %s'
-                % (observer.returncode, '\n  '.join(lines[-15:]))]
+                % (observer.returncode, '\n  '.join(lines[-15:]))], ''
     figures = json.loads(result[-1])
-    report(figures)
-    return check_figures(figures)
+    text = report(figures)
+    print(text)
+    return check_figures(figures), text
 
 
 def report(f):
-    print('two hosts, link cut for %.1f s while driving at %.2f m/s (commands %.2f rad/s at most):'
-          % (f['cut_seconds'], f['speed_before_cut'], f['rate_before_cut']))
-    print('  last command reached the robot %.3f s before the cut' % f['last_command_before_cut'])
-    print('  at rest %.3f s after the last command, %.3f s after the cut (expected %.3f s = '
-          'command_timeout %.2f + period %.3f + ramp %.3f)'
-          % (f['rest_after_last_command'] or math.nan, f['rest_after_cut'] or math.nan,
-             f['command_timeout'] + f['period'] + f['ramp'], f['command_timeout'], f['period'],
-             f['ramp']))
-    print('  travelled %.3f m after the cut (bound %.1f m)' % (f['distance_after_cut'],
-                                                                DIFF_DRIVE_BOUND))
-    print('  after the restore: the first command arrived %.3f s later; %d commands sent during '
-          'the cut arrived after it (the oldest %.2f s old); moving again %.3f s, over %.2f m/s '
-          'again %.3f s after the restore'
-          % (f['first_command_after_restore'] or math.nan, f['stale_commands'],
-             f['oldest_stale_age'], f['moving_again_after_restore'] or math.nan,
-             0.5 * SPEED, f['driving_again_after_restore'] or math.nan))
+    """The figures, as the lines it prints and the JUnit result keeps."""
+    return '\n'.join([
+        'two hosts, link cut for %.1f s while driving at %.2f m/s (commands %.2f rad/s at most):'
+        % (f['cut_seconds'], f['speed_before_cut'], f['rate_before_cut']),
+        '  last command reached the robot %.3f s before the cut' % f['last_command_before_cut'],
+        '  at rest %.3f s after the last command, %.3f s after the cut (expected %.3f s = '
+        'command_timeout %.2f + period %.3f + ramp %.3f)'
+        % (f['rest_after_last_command'] or math.nan, f['rest_after_cut'] or math.nan,
+           f['command_timeout'] + f['period'] + f['ramp'], f['command_timeout'], f['period'],
+           f['ramp']),
+        '  travelled %.3f m after the cut (bound %.1f m)' % (f['distance_after_cut'],
+                                                             DIFF_DRIVE_BOUND),
+        '  after the restore: the first command arrived %.3f s later; %d commands sent during '
+        'the cut arrived after it (the oldest %.2f s old); moving again %.3f s, over %.2f m/s '
+        'again %.3f s after the restore'
+        % (f['first_command_after_restore'] or math.nan, f['stale_commands'],
+           f['oldest_stale_age'], f['moving_again_after_restore'] or math.nan,
+           0.5 * SPEED, f['driving_again_after_restore'] or math.nan)])
 
 
 # --- the observer, in the robot's namespace ---------------------------------------------------
