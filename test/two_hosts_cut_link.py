@@ -3,16 +3,16 @@
 the link between them cut mid-run and restored.
 
 usage (as root, after `. install/setup.sh`):
-    test/two_hosts_cut_link.py [--cut SECONDS] [--junit RESULT.xml]
+    test/two_hosts_cut_link.py [--cut SECONDS] [--master robot|workstation] [--junit RESULT.xml]
 
 Two namespaces joined by a veth pair stand for two computers: `robot` (10.210.0.1: the master,
-`terrain_stack.launch part:=robot`, i.e. the plant and hardware_interface_sim) and `workstation`
-(10.210.0.2: `part:=workstation`, the controller, and an operator's `rostopic pub` of a 1 m/s
-teleop cmd_vel at 20 Hz), ROS_IP set in each, clock:=wall as in hardware in the loop. An
-observer in the robot's namespace (this file, --observe) waits for the robot to drive (faster
-than half of 1 m/s for a second: on eq 59's hills the centre's speed varies about the command),
-takes the workstation's end of the link down (`ip link set ... down`) for --cut seconds, brings
-it up again and measures:
+unless --master workstation; `terrain_stack.launch part:=robot`, i.e. the plant and
+hardware_interface_sim) and `workstation` (10.210.0.2: `part:=workstation`, the controller, and
+an operator's `rostopic pub` of a 1 m/s teleop cmd_vel at 20 Hz), ROS_IP set in each,
+clock:=wall as in hardware in the loop. An observer in the robot's namespace (this file,
+--observe) waits for the robot to drive (faster than half of 1 m/s for a second: on eq 59's
+hills the centre's speed varies about the command), takes the workstation's end of the link
+down (`ip link set ... down`) for --cut seconds, brings it up again and measures:
 
 * at rest: the first actuator state with every velocity exactly 0 after the cut. The watchdog
   zeroes the set-points command_timeout after the last command it accepted, checked once per
@@ -53,7 +53,6 @@ SOURCE = os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
 NS_PATTERN = re.compile(r'^sr2h(\d+)(robot|ws)$')
 ROBOT_IP, WORKSTATION_IP = '10.210.0.1', '10.210.0.2'
 LINK = 'link0'
-MASTER_URI = 'http://%s:11311' % ROBOT_IP
 STACK_NS = '/sphere'
 SPEED = 1.0             # [m/s] the operator's command
 DIFF_DRIVE_BOUND = 0.8  # [m] travelled after the cut (diff_drive_controller's test)
@@ -103,10 +102,13 @@ def remove_stale_namespaces():
 class TwoHosts:
     """Two namespaces, the processes started in them, and their removal."""
 
-    def __init__(self, logs):
+    def __init__(self, logs, master):
         self.logs = logs
         self.robot = 'sr2h%drobot' % os.getpid()
         self.workstation = 'sr2h%dws' % os.getpid()
+        self.master = (self.robot, ROBOT_IP) if master == 'robot' else (self.workstation,
+                                                                        WORKSTATION_IP)
+        self.master_uri = 'http://%s:11311' % self.master[1]
         self.namespaces = []
         self.processes = []
 
@@ -127,7 +129,7 @@ class TwoHosts:
             run('ip', '-n', name, 'link', 'set', LINK, 'up')
 
     def environment(self, address):
-        env = dict(os.environ, ROS_IP=address, ROS_MASTER_URI=MASTER_URI,
+        env = dict(os.environ, ROS_IP=address, ROS_MASTER_URI=self.master_uri,
                    ROS_HOME=os.path.join(self.logs, 'ros_home_' + address))
         env.pop('ROS_HOSTNAME', None)  # it would take precedence over ROS_IP
         return env
@@ -143,14 +145,15 @@ class TwoHosts:
         return process
 
     def wait_for_master(self, timeout):
-        """Until the master answers in the robot's namespace (a roslaunch started before would
-        start a master of its own)."""
-        probe = ('ip', 'netns', 'exec', self.robot, sys.executable, '-c',
+        """Until the master answers on its host (a roslaunch started before would start a
+        master of its own)."""
+        namespace, address = self.master
+        probe = ('ip', 'netns', 'exec', namespace, sys.executable, '-c',
                  'import rosgraph, sys; sys.exit(not rosgraph.is_master_online())')
         deadline = time.time() + timeout
-        while subprocess.run(probe, env=self.environment(ROBOT_IP)).returncode != 0:
+        while subprocess.run(probe, env=self.environment(address)).returncode != 0:
             if time.time() > deadline:
-                raise AssertionError('no master at %s after %.0f s' % (MASTER_URI, timeout))
+                raise AssertionError('no master at %s after %.0f s' % (self.master_uri, timeout))
             time.sleep(0.2)
 
     def stop(self):
@@ -216,6 +219,8 @@ def write_junit(path, seconds, failures, skipped, text):
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('--cut', type=float, default=5.0, help='seconds the link stays down')
+    parser.add_argument('--master', choices=('robot', 'workstation'), default='robot',
+                        help='the host of the master (default: the robot)')
     parser.add_argument('--junit', help='write a JUnit result here (for catkin run_tests)')
     parser.add_argument('--observe', action='store_true', help=argparse.SUPPRESS)
     parser.add_argument('--workstation-ns', help=argparse.SUPPRESS)
@@ -226,7 +231,7 @@ def main(argv):
     started = time.time()
     skipped, failures, text = None, [], ''
     try:
-        failures, text = two_hosts(args.cut)
+        failures, text = two_hosts(args.cut, args.master)
     except Skip as reason:
         skipped = str(reason)
         print('SKIPPED: %s' % skipped)
@@ -241,7 +246,7 @@ def main(argv):
     return 1 if failures else 0
 
 
-def two_hosts(cut):
+def two_hosts(cut, master):
     if os.geteuid() != 0:
         raise Skip('needs root (network namespaces); run it with sudo')
     if not shutil.which('ip'):
@@ -253,7 +258,7 @@ def two_hosts(cut):
         signal.signal(signum, raise_exit)
     remove_stale_namespaces()
     logs = tempfile.mkdtemp(prefix='two_hosts_cut_link.')
-    hosts = TwoHosts(logs)
+    hosts = TwoHosts(logs, master)
     failures = ['stopped before its measurements']
     try:
         hosts.create()
@@ -274,7 +279,7 @@ def drive_and_cut(hosts, cut):
     """Starts the master, both halves, the operator and the observer: the checks' failures
     and the report."""
     try:
-        hosts.start(hosts.robot, ROBOT_IP, 'roscore', 'roscore', '-p', '11311')
+        hosts.start(*hosts.master, 'roscore', 'roscore', '-p', '11311')
         hosts.wait_for_master(60)
         hosts.start(hosts.robot, ROBOT_IP, 'robot', *stack('robot'))
         hosts.start(hosts.workstation, WORKSTATION_IP, 'workstation', *stack('workstation'))
