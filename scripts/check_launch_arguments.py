@@ -222,6 +222,18 @@ class ActuatorModels(Domain):
         return self.FILE.check(value, arguments)
 
 
+class Part(Domain):
+    """Which half of a stack this host runs. Nodelets share one process, which cannot span two
+    hosts."""
+
+    CHOICE = Choice('all', 'robot', 'workstation')
+
+    def check(self, value, arguments):
+        if value != 'all' and arguments.get('nodelet', 'false').lower() in ('true', '1'):
+            return 'expected all with nodelet:=true (one nodelet manager cannot span two hosts)'
+        return self.CHOICE.check(value, arguments)
+
+
 class YamlOf(Domain):
     def __init__(self, kind, describe):
         self.kind, self.text = kind, describe
@@ -273,6 +285,7 @@ DOMAINS = {
     'nodelet': BOOLEAN,
     'respawn': BOOLEAN,
     'wait_for_subscribers': Number(minimum=0, whole=True),
+    'part': Part(),
     'odom': Pattern(r'^/?%s(/%s)*$' % (NAME, NAME), 'a topic name, relative or absolute, e.g. odom or /ekf/odom'),
     'origin_x': Number(unit='m'),
     'origin_y': Number(unit='m'),
