@@ -44,7 +44,7 @@ def main():
         run = subprocess.run([sys.executable, CHECK, '--stack', stack, '--kill', node, '--respawn']
                              + options, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         found = RECOVERY.search(run.stdout)
-        passed = run.returncode == 0 and 'FAILURE' not in run.stdout and 'ERROR' not in run.stdout
+        passed = run.returncode == 0 and 'RESULT: SUCCESS' in run.stdout
         if not found:
             rows.append('| %s | `%s` | no measurement (exit %d) |  |  |  | %s |'
                         % (stack, node, run.returncode, 'passed' if passed else 'FAILED'))

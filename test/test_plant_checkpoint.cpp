@@ -63,24 +63,81 @@ TEST(PlantCheckpoint, NaNComesBackANaN) {
   EXPECT_TRUE(std::isnan(sr::parsePlantCheckpoint(sr::serialise(written), "text").state[0]));
 }
 
-TEST(PlantCheckpoint, WriteReplacesTheFileAndLeavesNoTemporary) {
+/// Overwrites `count` bytes of `path` at `offset` with 'x': a slot torn by a kill while written.
+void tear(const std::string& path, std::size_t offset, std::size_t count) {
+  std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+  file.seekp(static_cast<std::streamoff>(offset));
+  file << std::string(count, 'x');
+}
+
+sr::PlantCheckpoint at(sr::Nanoseconds time) {
+  sr::PlantCheckpoint checkpoint = sample();
+  checkpoint.time = time;
+  checkpoint.state[0] = 1e-9 * static_cast<double>(time);
+  return checkpoint;
+}
+
+TEST(PlantCheckpoint, TheNewestCheckpointIsResumed) {
   const std::string path = temporaryDirectory() + "/plant.checkpoint";
-  sr::PlantCheckpoint first = sample();
-  sr::writePlantCheckpoint(path, first);
-  sr::PlantCheckpoint second = sample();
-  second.time += 10'000'000;
-  second.state[0] = 0.2;
-  sr::writePlantCheckpoint(path, second);
-  const sr::ResumeDecision decision = sr::decideResume(path, second.key);
+  sr::PlantCheckpointWriter writer(path);
+  for (sr::Nanoseconds t = 10'000'000; t <= 50'000'000; t += 10'000'000) writer.write(at(t));
+  const sr::ResumeDecision decision = sr::decideResume(path, sample().key);
   ASSERT_TRUE(decision.checkpoint) << decision.reason;
-  EXPECT_EQ(decision.checkpoint->time, second.time);
-  EXPECT_EQ(bitsOf(decision.checkpoint->state[0]), bitsOf(0.2));
-  EXPECT_FALSE(std::ifstream(path + ".tmp"));
+  EXPECT_EQ(decision.checkpoint->time, 50'000'000);
+  EXPECT_EQ(bitsOf(decision.checkpoint->state[0]), bitsOf(at(50'000'000).state[0]));
+}
+
+TEST(PlantCheckpoint, ATornSlotFallsBackToTheCheckpointBefore) {
+  const std::string path = temporaryDirectory() + "/plant.checkpoint";
+  {
+    sr::PlantCheckpointWriter writer(path);
+    writer.write(at(10'000'000));  // slot 1
+    writer.write(at(20'000'000));  // slot 2
+    writer.write(at(30'000'000));  // slot 1
+  }
+  tear(path, 100, 20);  // slot 1, in its fingerprint line
+  const sr::ResumeDecision decision = sr::decideResume(path, sample().key);
+  ASSERT_TRUE(decision.checkpoint) << decision.reason;
+  EXPECT_EQ(decision.checkpoint->time, 20'000'000);
+  tear(path, sr::kCheckpointSlotSize + 200, 5);  // slot 2 too
+  const sr::ResumeDecision none = sr::decideResume(path, sample().key);
+  EXPECT_FALSE(none.checkpoint);
+  for (const char* needle : {"(slot 1)", "(slot 2)", "checksum does not match"})
+    EXPECT_NE(none.reason.find(needle), std::string::npos) << none.reason;
+}
+
+TEST(PlantCheckpoint, ARestartedWriterKeepsTheNewestUntilItWritesANewer) {
+  const std::string path = temporaryDirectory() + "/plant.checkpoint";
+  {
+    sr::PlantCheckpointWriter writer(path);
+    writer.write(at(10'000'000));  // slot 1
+    writer.write(at(20'000'000));  // slot 2, the newest
+  }
+  sr::PlantCheckpointWriter restarted(path);
+  restarted.write(at(30'000'000));  // over slot 1, the older
+  tear(path, 100, 20);  // slot 1, torn while written
+  const sr::ResumeDecision decision = sr::decideResume(path, sample().key);
+  ASSERT_TRUE(decision.checkpoint) << decision.reason;
+  EXPECT_EQ(decision.checkpoint->time, 20'000'000);
+}
+
+TEST(PlantCheckpoint, AStateTooLargeForASlotIsAnErrorNamingTheFile) {
+  const std::string path = temporaryDirectory() + "/plant.checkpoint";
+  sr::PlantCheckpointWriter writer(path);
+  sr::PlantCheckpoint large = sample();
+  large.state.assign(400, M_PI);
+  try {
+    writer.write(large);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    for (const std::string& needle : {path, std::string("400 values")})
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+  }
 }
 
 TEST(PlantCheckpoint, AnUnwritableDirectoryIsAnErrorNamingTheFile) {
   try {
-    sr::writePlantCheckpoint("/nonexistent_directory/plant.checkpoint", sample());
+    sr::PlantCheckpointWriter writer("/nonexistent_directory/plant.checkpoint");
     FAIL() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent_directory/plant.checkpoint"),
@@ -97,7 +154,7 @@ TEST(PlantCheckpoint, NoFileMeansStartAfresh) {
 
 TEST(PlantCheckpoint, ACheckpointOfAnotherLaunchIsRefusedSayingWhy) {
   const std::string path = temporaryDirectory() + "/plant.checkpoint";
-  sr::writePlantCheckpoint(path, sample());
+  sr::PlantCheckpointWriter(path).write(sample());
   sr::CheckpointKey later_launch = sample().key;
   later_launch.run_id = "7d1c0b9e-d0f1-11ee-9a6b-0242ac120002";
   const sr::ResumeDecision decision = sr::decideResume(path, later_launch);
@@ -106,9 +163,24 @@ TEST(PlantCheckpoint, ACheckpointOfAnotherLaunchIsRefusedSayingWhy) {
     EXPECT_NE(decision.reason.find(needle), std::string::npos) << decision.reason;
 }
 
+TEST(PlantCheckpoint, ALaterLaunchResumesItsOwnNotAnEarlierOnesNewerCheckpoint) {
+  const std::string path = temporaryDirectory() + "/plant.checkpoint";
+  {
+    sr::PlantCheckpointWriter earlier_launch(path);
+    earlier_launch.write(at(110'000'000'000));
+    earlier_launch.write(at(120'000'000'000));
+  }
+  sr::PlantCheckpoint own = at(20'000'000'000);
+  own.key.run_id = "7d1c0b9e-d0f1-11ee-9a6b-0242ac120002";
+  sr::PlantCheckpointWriter(path).write(own);  // over one slot; the other is still 110 s's
+  const sr::ResumeDecision decision = sr::decideResume(path, own.key);
+  ASSERT_TRUE(decision.checkpoint) << decision.reason;
+  EXPECT_EQ(decision.checkpoint->time, own.time);
+}
+
 TEST(PlantCheckpoint, ACheckpointOfAnotherModelIsRefusedSayingWhy) {
   const std::string path = temporaryDirectory() + "/plant.checkpoint";
-  sr::writePlantCheckpoint(path, sample());
+  sr::PlantCheckpointWriter(path).write(sample());
   sr::CheckpointKey other_model = sample().key;
   other_model.fingerprint = sr::fingerprintOf("terrain plant RS");
   ASSERT_NE(other_model.fingerprint, sample().key.fingerprint);
@@ -120,22 +192,24 @@ TEST(PlantCheckpoint, ACheckpointOfAnotherModelIsRefusedSayingWhy) {
 }
 
 TEST(PlantCheckpoint, ADamagedCheckpointIsRefusedNamingTheLine) {
+  // Damage that keeps the checksum right: a checkpoint edited by hand.
+  const auto resealed = [](std::string body) {
+    body = body.substr(0, body.rfind("checksum "));
+    return body + "checksum " + sr::fingerprintOf(body) + "\n";
+  };
   const std::string text = sr::serialise(sample());
-  // Cut inside the state's values: a checkpoint written by something other than
-  // writePlantCheckpoint, whose rename never leaves half a file.
-  EXPECT_INVALID_ARGUMENT(sr::parsePlantCheckpoint(text.substr(0, text.rfind(' ')) + "\n", "f.ckpt"),
-                          "f.ckpt:6", "truncated");
-  EXPECT_INVALID_ARGUMENT(sr::parsePlantCheckpoint("something else\n", "f.ckpt"), "f.ckpt:1",
-                          "not a plant checkpoint");
-  std::string bad_time = text;
+  const std::string body = text.substr(0, text.rfind("checksum "));
+  EXPECT_INVALID_ARGUMENT(
+      sr::parsePlantCheckpoint(resealed(body.substr(0, body.rfind(' ')) + "\n"), "f.ckpt"),
+      "f.ckpt:6", "state of 12 values has 11");
+  EXPECT_INVALID_ARGUMENT(sr::parsePlantCheckpoint(resealed("something else\n"), "f.ckpt"),
+                          "f.ckpt:1", "not a plant checkpoint");
+  std::string bad_time = body;
   bad_time.replace(bad_time.find("time_ns 31240000000"), 19, "time_ns 31.24");
-  EXPECT_INVALID_ARGUMENT(sr::parsePlantCheckpoint(bad_time, "f.ckpt"), "f.ckpt:5", "31.24",
-                          "nanoseconds");
-  const std::string path = temporaryDirectory() + "/plant.checkpoint";
-  std::ofstream(path) << text.substr(0, 60);
-  const sr::ResumeDecision decision = sr::decideResume(path, sample().key);
-  EXPECT_FALSE(decision.checkpoint);
-  EXPECT_NE(decision.reason.find(path + ":"), std::string::npos) << decision.reason;
+  EXPECT_INVALID_ARGUMENT(sr::parsePlantCheckpoint(resealed(bad_time), "f.ckpt"), "f.ckpt:5",
+                          "31.24", "nanoseconds");
+  EXPECT_INVALID_ARGUMENT(sr::parsePlantCheckpoint(text.substr(0, 60), "f.ckpt"), "f.ckpt",
+                          "no checksum line");
 }
 
 TEST(PlantCheckpoint, KeysOfOneRunAndModelMatch) {

@@ -87,17 +87,26 @@ ros::Time PlantLoop::resume() {
   for (const std::string& name : model_->sharedParameters())
     description += "\n" + name + " " + parameterText(nh_.resolveName(name));
   checkpoint_key_.fingerprint = fingerprintOf(description);
-  checkpoint_path_ = checkpointPath(parameters_.checkpoint, pnh_);
-  const ResumeDecision decision = decideResume(checkpoint_path_, checkpoint_key_);
+  ResumeDecision decision;
+  std::string path;
+  try {
+    path = checkpointPath(parameters_.checkpoint, pnh_);
+    decision = decideResume(path, checkpoint_key_);
+    checkpoint_.emplace(path);
+  } catch (const std::exception& e) {  // a directory or file that cannot be made: run without
+    ROS_ERROR_STREAM("~checkpoint " << parameters_.checkpoint << ": " << e.what()
+                                    << "; no checkpoint is kept, a restart starts afresh");
+    return {};
+  }
   if (!decision.checkpoint) {
-    ROS_INFO_STREAM("Starting afresh, keeping a checkpoint in " << checkpoint_path_ << " ("
+    ROS_INFO_STREAM("Starting afresh, keeping a checkpoint in " << path << " ("
                                                                 << decision.reason << ")");
     return {};
   }
   try {
     model_->resumeState(decision.checkpoint->state);
   } catch (const std::invalid_argument& e) {
-    ROS_ERROR_STREAM("Starting afresh: the checkpoint " << checkpoint_path_ << " is no state of "
+    ROS_ERROR_STREAM("Starting afresh: the checkpoint " << path << " is no state of "
                                                         << "this model: " << e.what());
     return {};
   }
@@ -105,14 +114,14 @@ ros::Time PlantLoop::resume() {
   start.fromNSec(decision.checkpoint->start);
   time.fromNSec(decision.checkpoint->time);
   timeline_.resume(start, time);
-  ROS_INFO_STREAM("Resuming from the checkpoint " << checkpoint_path_ << " at " << time
+  ROS_INFO_STREAM("Resuming from the checkpoint " << path << " at " << time
                                                   << " s, " << model_->describeState());
   return time;
 }
 
 void PlantLoop::writeCheckpoint(const ros::Time& now) {
   try {
-    writePlantCheckpoint(checkpoint_path_, {checkpoint_key_, timeline_.start(),
+    checkpoint_->write({checkpoint_key_, timeline_.start(),
                                             nanosecondsOf(now), *model_->checkpointState()});
   } catch (const std::runtime_error& e) {
     ++checkpoint_failures_;
@@ -153,7 +162,7 @@ std::vector<std::string> PlantLoop::tick(const ros::Time& now) {
   std::vector<std::string> published = step_publications_.take();
   if (std::find(published.begin(), published.end(), state_topic_) != published.end()) {
     state_rate_->tick();
-    if (!checkpoint_path_.empty()) writeCheckpoint(now);
+    if (checkpoint_) writeCheckpoint(now);
   }
   return published;
 }
@@ -164,8 +173,8 @@ void PlantLoop::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   clock_->report(status);
   timeline_.report(status, now);
   actuator_input_.report(status, now);
-  if (!checkpoint_path_.empty()) {
-    status.add("checkpoint", checkpoint_path_);
+  if (checkpoint_) {
+    status.add("checkpoint", checkpoint_->path());
     status.add("checkpoint write failures", checkpoint_failures_);
     if (checkpoint_failures_ > 0)
       status.mergeSummary(diagnostic_msgs::DiagnosticStatus::WARN,

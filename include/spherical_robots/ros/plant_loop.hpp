@@ -121,7 +121,7 @@ class PlantLoop {
   std::string state_topic_;
   std::unique_ptr<TopicRate> state_rate_;
   PlantModel* model_ = nullptr;
-  std::string checkpoint_path_;  ///< empty: no checkpoint
+  std::optional<PlantCheckpointWriter> checkpoint_;  ///< none: no checkpoint
   CheckpointKey checkpoint_key_;
   unsigned long checkpoint_failures_ = 0;
   ros::Subscriber actuator_sub_;
