@@ -77,7 +77,12 @@ void PlantLoop::start(PlantModel& model, const LoopPublisher& state, double stat
 }
 
 ros::Time PlantLoop::resume() {
-  if (parameters_.checkpoint == "none" || !model_->checkpointState()) return {};
+  if (parameters_.checkpoint == "none") return {};
+  if (!model_->checkpointState()) {
+    ROS_WARN_STREAM("~checkpoint " << parameters_.checkpoint << ": this plant (" << defaults_.task
+                                   << ") keeps no checkpoint; a restart starts afresh");
+    return {};
+  }
   if (!ros::param::get("/run_id", checkpoint_key_.run_id)) {
     ROS_WARN_STREAM("~checkpoint " << parameters_.checkpoint << ": no /run_id (not started by "
                                    "roslaunch), so no checkpoint is kept");
