@@ -11,7 +11,9 @@ runs), and watches every process's exit. The launch file says what each node is:
 nodes of the loop with respawn:=false; with respawn:=true those are `respawn` (roslaunch restarts
 them); observers (rviz, the recorder, robot_state_publisher) are neither. Here, unlike roslaunch,
 the end of a required process is sorted into a normal end or a failure (StackEnd), so a normal end
-prints no red "REQUIRED process has died" and a failure gives a non-zero status.
+prints no red "REQUIRED process has died" and a failure gives a non-zero status. A plant that
+keeps a checkpoint (its ~checkpoint is not `none`: the stacks' respawn:=true) is restarted when a
+signal kills it, and resumes from its checkpoint; an exit with an error status still fails.
 
 Exit status: 0 the plant ended the stack (it exits 0 at its `duration`); 1 a required node died
 (a node of the loop with respawn:=false, or the plant failed); 2 the launch failed (bad arguments,
@@ -44,10 +46,12 @@ class StackEnd:
 
     `required`: the node names (as roslaunch names processes: 'sphere/terrain_plant') whose end
     ends the stack; `ends_stack(node)`: whether that node ends it normally by exiting with
-    status 0. Times are seconds (any monotonic clock)."""
+    status 0; `restarted`: required nodes that roslaunch restarts when a signal kills them.
+    Times are seconds (any monotonic clock)."""
 
-    def __init__(self, required, ends_stack, settle):
+    def __init__(self, required, ends_stack, settle, restarted=()):
         self.required, self.ends_stack, self.settle = set(required), ends_stack, settle
+        self.restarted = set(restarted)
         self.first_failure = None
         self.failures = []
         self.status = None
@@ -59,6 +63,8 @@ class StackEnd:
         if self.ends_stack(node) and exit_code == 0:
             self.status = 0
             return
+        if node in self.restarted and exit_code < 0:
+            return  # killed: restarted from its checkpoint
         self.failures.append((node, exit_code))
         if self.first_failure is None:
             self.first_failure = now
@@ -95,13 +101,19 @@ class SupervisedLaunch(roslaunch.parent.ROSLaunchParent):
         super().__init__(run_id, files, **kwargs)
         self.deaths = deaths
         self.required = []
+        self.restarted = []
 
     def _load_config(self):
         super()._load_config()
         for node in self.config.nodes:
             if node.required:
-                self.required.append(rosgraph.names.ns_join(node.namespace, node.name).lstrip('/'))
+                name = rosgraph.names.ns_join(node.namespace, node.name).lstrip('/')
+                self.required.append(name)
                 node.required = False
+                checkpoint = self.config.params.get('/%s/checkpoint' % name)
+                if checkpoint is not None and checkpoint.value != 'none':
+                    self.restarted.append(name)
+                    node.respawn = True
 
     def _start_pm(self):
         super()._start_pm()
@@ -146,7 +158,7 @@ def main(argv):
         parent.shutdown()
         return 2
     nodelets = any(node.rsplit('/', 1)[-1] == 'nodelet_manager' for node in parent.required)
-    end = StackEnd(parent.required, ends_stack, SETTLE if nodelets else 0.0)
+    end = StackEnd(parent.required, ends_stack, SETTLE if nodelets else 0.0, parent.restarted)
     interrupted = []
     # Ctrl-C reaches the nodes too, and a plant that exits 0 on it has not ended the stack.
     roslaunch_handler = signal.getsignal(signal.SIGINT)

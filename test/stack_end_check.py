@@ -50,6 +50,21 @@ class StackEndTest(unittest.TestCase):
         end.died('sphere/pure_pursuit_controller', 0, 10.0)
         self.assertEqual(end.decide(10.0 + SETTLE), 1)
 
+    def test_a_killed_plant_that_keeps_a_checkpoint_is_restarted_and_ends_the_stack_later(self):
+        end = RUN_STACK.StackEnd(PROCESSES, RUN_STACK.ends_stack, 0.0,
+                                 restarted=['sphere/terrain_plant'])
+        end.died('sphere/terrain_plant', -9, 10.0)
+        self.assertIsNone(end.decide(20.0))
+        end.died('sphere/terrain_plant', 0, 30.0)
+        self.assertEqual(end.decide(30.0), 0)
+
+    def test_a_plant_that_keeps_a_checkpoint_and_exits_with_an_error_fails(self):
+        # e.g. a bad parameter: restarting it would fail again
+        end = RUN_STACK.StackEnd(PROCESSES, RUN_STACK.ends_stack, 0.0,
+                                 restarted=['sphere/terrain_plant'])
+        end.died('sphere/terrain_plant', 1, 10.0)
+        self.assertEqual(end.decide(10.0), 1)
+
     def test_a_failed_plant_is_a_failure_at_once(self):
         end = stack_end(PROCESSES)
         end.died('sphere/terrain_plant', 1, 10.0)

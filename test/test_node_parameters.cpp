@@ -95,6 +95,14 @@ TEST(PlantLoopParameters, MalformedParametersAreNamed) {
                           "integer >= 0");
   EXPECT_INVALID_ARGUMENT(loop("duration: .nan\n"), "duration", "finite");
   EXPECT_INVALID_ARGUMENT(loop("publish_rate: fast\n"), "publish_rate", "number");
+  EXPECT_INVALID_ARGUMENT(loop("checkpoint: checkpoints\n"), "checkpoint", "checkpoints",
+                          "none, ros_home or an absolute directory");
+}
+
+TEST(PlantLoopParameters, CheckpointNoneByDefault) {
+  EXPECT_EQ(loop("").checkpoint, "none");
+  EXPECT_EQ(loop("checkpoint: ros_home\n").checkpoint, "ros_home");
+  EXPECT_EQ(loop("checkpoint: /var/tmp/plants\n").checkpoint, "/var/tmp/plants");
 }
 
 TEST(TerrainPlantParameters, DefaultsOverridesAndErrors) {

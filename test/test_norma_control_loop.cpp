@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "expect_invalid_argument.hpp"
 #include "spherical_robots/config/norma_description.hpp"
@@ -180,6 +181,68 @@ TEST(NormaControlLoop, AReleasedEStopResumesTracking) {
               "without\n", with, without);
   EXPECT_LT(with, 0.3);
   EXPECT_LE(with, without + 1e-4);
+}
+
+namespace {
+
+// The tracking controller closed through the plant for `end` seconds; at `replaced_at` its loop
+// is replaced by a new one (a respawned norma_controller), given the run's path start if
+// `keep_path_start`. Returns the largest distance after `from` [s] between the contact point and
+// the run's path of eq 52 (timed from the first state, as the uninterrupted loop times it).
+double worstErrorAfterReplacement(double replaced_at, bool keep_path_start, double from,
+                                  double end) {
+  const norma::NormaDynamics dynamics(normaParameters());
+  norma::EffortLimits limits;
+  auto loop = makeLoop(norma::ControllerKind::kTracking, limits);
+  norma::NormaState state;
+  state.psi = kInitialPsi;
+  double worst = 0.0;
+  bool replaced = false;
+  const int steps = static_cast<int>(std::lround(end / kStep));
+  for (int k = 1; k <= steps; ++k) {
+    const double t = k * kStep;
+    if (!replaced && t >= replaced_at) {
+      const std::optional<double> path_start = loop.pathStart();
+      loop = makeLoop(norma::ControllerKind::kTracking, limits);
+      if (keep_path_start) loop.startPathAt(*path_start);
+      replaced = true;
+    }
+    const norma::ControlOutput output = loop.step(t, measurementOf(state));
+    const double torque = std::clamp(output.torque, -limits.max_torque, limits.max_torque);
+    const double force = std::clamp(output.force, -limits.max_force, limits.max_force);
+    loop.actuatorsApplied(torque, force);
+    const norma::PathPoint run_path = norma::lissajousPath(t - kStep);
+    if (t >= from) worst = std::max(worst, std::hypot(state.x - run_path.x, state.y - run_path.y));
+    state = norma::advanceWithHeldInputs(dynamics, state, torque, force, kStep, kStep);
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST(NormaControlLoop, AReplacedLoopGivenThePathStartTracksTheRunsPath) {
+  // The respawned controller's defect (docs/conventions.md, "When a node dies"): a new loop times
+  // eq 52 from its own first state and chases a path started anew where the robot is; given the
+  // run's start it tracks as the uninterrupted loop does, once its integrals have settled.
+  const double uninterrupted = worstErrorAfterReplacement(1e9, false, 40.0, 60.0);
+  const double kept = worstErrorAfterReplacement(20.0, true, 40.0, 60.0);
+  const double restarted = worstErrorAfterReplacement(20.0, false, 40.0, 60.0);
+  std::printf("|e| max over 40-60 s: uninterrupted %.5f m, loop replaced at 20 s with the path "
+              "start kept %.5f m, restarted %.5f m\n", uninterrupted, kept, restarted);
+  EXPECT_LE(kept, uninterrupted + 1e-3);
+  EXPECT_GT(restarted, 10.0 * uninterrupted);
+}
+
+TEST(NormaControlLoop, TheGivenPathStartIsKeptOnTheFirstStateAndAJumpBack) {
+  auto loop = makeLoop(norma::ControllerKind::kTracking);
+  EXPECT_FALSE(loop.pathStart());
+  loop.startPathAt(0.001);
+  loop.step(20.0, offPath());
+  EXPECT_EQ(*loop.pathStart(), 0.001);
+  EXPECT_EQ(loop.reference(20.0).x, norma::lissajousPath(20.0 - 0.001).x);
+  loop.step(5.0, offPath());  // a clock gone back
+  EXPECT_EQ(*loop.pathStart(), 0.001);
+  EXPECT_INVALID_ARGUMENT(loop.startPathAt(kNaN), "path start");
 }
 
 int main(int argc, char** argv) {

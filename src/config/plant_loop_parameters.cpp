@@ -39,6 +39,11 @@ PlantLoopParameters loadPlantLoopParameters(const ParameterSource& source,
   p.origin_x = finiteNumber(source, "origin_x", p.origin_x);
   p.origin_y = finiteNumber(source, "origin_y", p.origin_y);
   p.origin_yaw = finiteNumber(source, "origin_yaw", p.origin_yaw);
+  p.checkpoint = source.text("checkpoint").value_or(p.checkpoint);
+  if (p.checkpoint != "none" && p.checkpoint != "ros_home" &&
+      (p.checkpoint.empty() || p.checkpoint.front() != '/'))
+    throw std::invalid_argument(source.origin() + ": parameter 'checkpoint' = '" + p.checkpoint +
+                                "' must be none, ros_home or an absolute directory");
   return p;
 }
 

@@ -17,6 +17,12 @@ LoopTimeline::Tick LoopTimeline::tick(Nanoseconds now) {
   return tick;
 }
 
+void LoopTimeline::resume(Nanoseconds start, Nanoseconds last_tick) {
+  clock_.observe(stampSeconds(last_tick));
+  start_ = start;
+  last_tick_ = last_tick;
+}
+
 bool LoopTimeline::complete(Nanoseconds now) {
   if (!finished_ && duration_ > 0.0 && started() && stampSeconds(now - start_) >= duration_ - 1e-9)
     finished_ = true;

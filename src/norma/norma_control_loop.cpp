@@ -79,6 +79,17 @@ void NormaControlLoop::actuatorsApplied(double torque, double force) {
   applied_known_ = true;
 }
 
+void NormaControlLoop::startPathAt(double t0) {
+  requireFinite(t0, "path start [s]");
+  path_start_ = t0;
+  path_start_given_ = true;
+}
+
+std::optional<double> NormaControlLoop::pathStart() const {
+  if (started_ || path_start_given_) return path_start_;
+  return std::nullopt;
+}
+
 PathPoint NormaControlLoop::reference(double t) const { return lissajousPath(t - path_start_); }
 
 ControlOutput NormaControlLoop::step(double t, const NormaMeasurement& state) {
@@ -90,7 +101,7 @@ ControlOutput NormaControlLoop::step(double t, const NormaMeasurement& state) {
             << " s): out of order or repeated";
     throw std::invalid_argument(problem.str());
   }
-  const double path_start = restart ? t : path_start_;
+  const double path_start = restart && !path_start_given_ ? t : path_start_;
   Eigen::Vector3d integrals = restart ? Eigen::Vector3d::Zero() : integrals_;
   if (!restart) {
     const double gap = t - last_t_;

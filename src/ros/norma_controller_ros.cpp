@@ -2,6 +2,7 @@
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
 
+#include <XmlRpcException.h>
 #include <geometry_msgs/PointStamped.h>
 #include <nav_msgs/Path.h>
 #include <sensor_msgs/JointState.h>
@@ -12,6 +13,7 @@
 
 #include "spherical_robots/config/norma_config.hpp"
 #include "spherical_robots/config/norma_description.hpp"
+#include "spherical_robots/core/plant_checkpoint.hpp"
 #include "spherical_robots/hardware/simulated_actuators.hpp"
 #include "spherical_robots/norma/norma_simulation.hpp"
 #include "spherical_robots/ros/norma_conversions.hpp"
@@ -24,7 +26,9 @@ namespace {
 
 constexpr double kPathPeriod = 200.0 * M_PI;  // [s] eq 52 repeats after 2π / 0.01
 constexpr int kDesiredPathSamples = 2000;
-constexpr double kLateAge = 0.002;           // [s] two 1 ms ticks: the delay the 1 kHz loop is built for
+constexpr double kLateAge = 0.002;
+// Where the first controller of a launch keeps the path's start for a respawned one: {run_id, start [s]}.
+constexpr const char* kPathStartParameter = "path_start";           // [s] two 1 ms ticks: the delay the 1 kHz loop is built for
 
 using GainsConfig = spherical_robots::NormaControllerConfig;
 
@@ -88,7 +92,8 @@ NormaControllerParameters loadNormaControllerParameters(const config::ParameterS
 }
 
 NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
-    : parameters_(loadNormaControllerParameters(RosParameterSource(pnh))),
+    : pnh_(pnh),
+      parameters_(loadNormaControllerParameters(RosParameterSource(pnh))),
       robot_(fromRobotDescription(nh, config::normaParametersFromUrdf)),
       loop_(norma::NormaController(robot_, parameters_.controller, parameters_.gains),
             parameters_.limits),
@@ -112,6 +117,7 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   updater_.setHardwareID("Norma");
   updater_.add("norma controller", this, &NormaControllerRos::diagnose);
   diagnostics_timer_ = startDiagnostics(nh, updater_);
+  resumePathStart();
   work_.join(nh, pnh, {joint_sub_, odom_sub_, actuator_sub_});
   // The server starts from the gains loaded above (config/norma.yaml), not from the .cfg's.
   reconfigure_ = std::make_unique<dynamic_reconfigure::Server<GainsConfig>>(pnh);
@@ -120,8 +126,40 @@ NormaControllerRos::NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh)
       [this](GainsConfig& config, std::uint32_t level) { onReconfigure(config, level); });
   ROS_INFO_STREAM("Norma controller: "
                   << norma::toString(controller().kind())
-                  << ", path eq 52 from the first state on " << input_.topic() << " and "
+                  << ", path eq 52 from "
+                  << (path_start_kept_ ? "this launch's start" : "the first state") << " on "
+                  << input_.topic() << " and "
                   << odom_input_.topic());
+}
+
+void NormaControllerRos::resumePathStart() {
+  if (!ros::param::get("/run_id", run_id_)) return;  // not launched: nothing to resume
+  XmlRpc::XmlRpcValue kept;
+  if (!pnh_.getParam(kPathStartParameter, kept)) return;
+  try {
+    const std::string mismatch =
+        keyMismatch({static_cast<std::string>(kept["run_id"]), {}}, {run_id_, {}});
+    if (!mismatch.empty()) {
+      ROS_INFO_STREAM("~" << kPathStartParameter << " not taken up: " << mismatch);
+      return;
+    }
+    loop_.startPathAt(static_cast<double>(kept["start"]));
+  } catch (const XmlRpc::XmlRpcException& e) {
+    ROS_WARN_STREAM("~" << kPathStartParameter << " = " << kept.toXml() << " is no {run_id, start}: "
+                        << e.getMessage() << "; timing the path from the first state");
+    return;
+  }
+  path_start_kept_ = true;
+  ROS_INFO_STREAM("Respawned: eq 52's path goes on from this launch's start at "
+                  << *loop_.pathStart() << " s");
+}
+
+void NormaControllerRos::keepPathStart() {
+  XmlRpc::XmlRpcValue kept;
+  kept["run_id"] = run_id_;
+  kept["start"] = *loop_.pathStart();
+  pnh_.setParam(kPathStartParameter, kept);
+  path_start_kept_ = true;
 }
 
 void NormaControllerRos::onReconfigure(GainsConfig& config, std::uint32_t /*level*/) {
@@ -188,6 +226,7 @@ void NormaControllerRos::control(const sensor_msgs::JointState& msg) {
     return;
   }
   input_.accept(this->now());
+  if (!path_start_kept_ && !run_id_.empty()) keepPathStart();
   command_pub_.publish(conversions::normaEffortCommand(output.torque, output.force, now));
   const double age = (this->now() - now).toSec();
   max_state_age_ = std::max(max_state_age_, age);

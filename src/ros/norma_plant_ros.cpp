@@ -114,6 +114,22 @@ void NormaPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status
     status.mergeSummary(diagnostic_msgs::DiagnosticStatus::WARN, "slider beyond the shaft's end");
 }
 
+std::optional<std::vector<double>> NormaPlantRos::checkpointState() const {
+  std::vector<double> numbers(state_.q.data(), state_.q.data() + 4);
+  numbers.insert(numbers.end(), state_.qd.data(), state_.qd.data() + 4);
+  numbers.insert(numbers.end(), {state_.x, state_.y, state_.psi});
+  return numbers;
+}
+
+void NormaPlantRos::resumeState(const std::vector<double>& numbers) {
+  requireStateSize(numbers, 11, "Norma (q, q_dot, X, Y, psi)");
+  state_.q = norma::Vector4(numbers.data());
+  state_.qd = norma::Vector4(numbers.data() + 4);
+  state_.x = numbers[8];
+  state_.y = numbers[9];
+  state_.psi = numbers[10];
+}
+
 std::string NormaPlantRos::describeState() const {
   std::ostringstream text;
   text << "centre at (" << state_.x << ", " << state_.y << ") m";

@@ -1,12 +1,42 @@
 #include "spherical_robots/ros/plant_loop.hpp"
 
+#include <XmlRpcValue.h>
+#include <ros/param.h>
+
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
 
 #include "spherical_robots/ros/diagnostics_timer.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 
 namespace spherical_robots {
+namespace {
+
+std::string rosHome() {
+  if (const char* home = std::getenv("ROS_HOME")) return home;
+  if (const char* home = std::getenv("HOME")) return std::string(home) + "/.ros";
+  throw std::invalid_argument("checkpoint: ros_home, but neither ROS_HOME nor HOME is set");
+}
+
+/// The checkpoint file of the plant whose private handle is pnh, in `where` (~checkpoint).
+std::string checkpointPath(const std::string& where, const ros::NodeHandle& pnh) {
+  const std::filesystem::path directory =
+      where == "ros_home" ? std::filesystem::path(rosHome()) / "checkpoints" : std::filesystem::path(where);
+  std::filesystem::create_directories(directory);
+  std::string name = pnh.getNamespace().substr(1);
+  std::replace(name.begin(), name.end(), '/', '.');
+  return (directory / (name + ".checkpoint")).string();
+}
+
+/// The parameter's value as XML-RPC text ("none" if unset), for the fingerprint.
+std::string parameterText(const std::string& name) {
+  XmlRpc::XmlRpcValue value;
+  return ros::param::get(name, value) ? value.toXml() : "none";
+}
+
+}  // namespace
 
 PlantLoop::PlantLoop(ros::NodeHandle nh, ros::NodeHandle pnh, const Defaults& defaults)
     : nh_(nh),
@@ -35,13 +65,73 @@ void PlantLoop::start(PlantModel& model, const LoopPublisher& state, double stat
   state_rate_ = std::make_unique<TopicRate>(state_topic_, state_rate, rate_tolerance_,
                                             [this] { return clock_->now(); });
   actuator_sub_ = nh_.subscribe("actuators/state", kLoopQueueSize, &PlantLoop::onActuatorState, this);
+  const ros::Time resume_at = resume();
   clock_ = makePlantClock(nh_, pnh_, parameters_,
                           [this](const ros::Time& now) { return tick(now); }, state.publisher(),
                           actuator_sub_);
+  if (!resume_at.isZero()) clock_->resumeAt(resume_at);
   updater_.setHardwareID(defaults_.hardware_id);
   updater_.add(defaults_.task, this, &PlantLoop::diagnose);
   state_rate_->addTo(updater_);
   diagnostics_timer_ = startDiagnostics(nh_, updater_);
+}
+
+ros::Time PlantLoop::resume() {
+  if (parameters_.checkpoint == "none") return {};
+  if (!model_->checkpointState()) {
+    ROS_WARN_STREAM("~checkpoint " << parameters_.checkpoint << ": this plant (" << defaults_.task
+                                   << ") keeps no checkpoint; a restart starts afresh");
+    return {};
+  }
+  if (!ros::param::get("/run_id", checkpoint_key_.run_id)) {
+    ROS_WARN_STREAM("~checkpoint " << parameters_.checkpoint << ": no /run_id (not started by "
+                                   "roslaunch), so no checkpoint is kept");
+    return {};
+  }
+  std::string description = defaults_.task + "\n" + parameterText(pnh_.getNamespace());
+  for (const std::string& name : model_->sharedParameters())
+    description += "\n" + name + " " + parameterText(nh_.resolveName(name));
+  checkpoint_key_.fingerprint = fingerprintOf(description);
+  ResumeDecision decision;
+  std::string path;
+  try {
+    path = checkpointPath(parameters_.checkpoint, pnh_);
+    decision = decideResume(path, checkpoint_key_);
+    checkpoint_.emplace(path);
+  } catch (const std::exception& e) {  // a directory or file that cannot be made: run without
+    ROS_ERROR_STREAM("~checkpoint " << parameters_.checkpoint << ": " << e.what()
+                                    << "; no checkpoint is kept, a restart starts afresh");
+    return {};
+  }
+  if (!decision.checkpoint) {
+    ROS_INFO_STREAM("Starting afresh, keeping a checkpoint in " << path << " ("
+                                                                << decision.reason << ")");
+    return {};
+  }
+  try {
+    model_->resumeState(decision.checkpoint->state);
+  } catch (const std::invalid_argument& e) {
+    ROS_ERROR_STREAM("Starting afresh: the checkpoint " << path << " is no state of "
+                                                        << "this model: " << e.what());
+    return {};
+  }
+  ros::Time start, time;
+  start.fromNSec(decision.checkpoint->start);
+  time.fromNSec(decision.checkpoint->time);
+  timeline_.resume(start, time);
+  ROS_INFO_STREAM("Resuming from the checkpoint " << path << " at " << time
+                                                  << " s, " << model_->describeState());
+  return time;
+}
+
+void PlantLoop::writeCheckpoint(const ros::Time& now) {
+  try {
+    checkpoint_->write({checkpoint_key_, timeline_.start(),
+                                            nanosecondsOf(now), *model_->checkpointState()});
+  } catch (const std::runtime_error& e) {
+    ++checkpoint_failures_;
+    ROS_ERROR_STREAM_THROTTLE(1.0, e.what());
+  }
 }
 
 void PlantLoop::onActuatorState(const sensor_msgs::JointState& msg) {
@@ -72,8 +162,10 @@ std::vector<std::string> PlantLoop::tick(const ros::Time& now) {
     clock_->finish();
   }
   std::vector<std::string> published = step_publications_.take();
-  if (std::find(published.begin(), published.end(), state_topic_) != published.end())
+  if (std::find(published.begin(), published.end(), state_topic_) != published.end()) {
     state_rate_->tick();
+    if (checkpoint_) writeCheckpoint(now);
+  }
   return published;
 }
 
@@ -83,6 +175,13 @@ void PlantLoop::diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) {
   clock_->report(status);
   timeline_.report(status, now);
   actuator_input_.report(status, now);
+  if (checkpoint_) {
+    status.add("checkpoint", checkpoint_->path());
+    status.add("checkpoint write failures", checkpoint_failures_);
+    if (checkpoint_failures_ > 0)
+      status.mergeSummary(diagnostic_msgs::DiagnosticStatus::WARN,
+                          "checkpoint not written: a restart would not resume");
+  }
 }
 
 }  // namespace spherical_robots

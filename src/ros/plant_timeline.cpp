@@ -31,6 +31,10 @@ void PlantTimeline::tick(const ros::Time& now, const std::function<void(double e
   }
 }
 
+void PlantTimeline::resume(const ros::Time& start, const ros::Time& last_tick) {
+  timeline_.resume(nanosecondsOf(start), nanosecondsOf(last_tick));
+}
+
 bool PlantTimeline::complete(const ros::Time& now) { return timeline_.complete(nanosecondsOf(now)); }
 
 void PlantTimeline::report(diagnostic_updater::DiagnosticStatusWrapper& status,

@@ -155,6 +155,21 @@ void TerrainPlantRos::diagnose(diagnostic_updater::DiagnosticStatusWrapper& stat
   status.add("phi [rad]", state_.phi);
 }
 
+std::optional<std::vector<double>> TerrainPlantRos::checkpointState() const {
+  return std::vector<double>{state_.x,         state_.y,         state_.psi,       state_.phi,
+                             orientation_.w(), orientation_.x(), orientation_.y(), orientation_.z()};
+}
+
+void TerrainPlantRos::resumeState(const std::vector<double>& numbers) {
+  requireStateSize(numbers, 8, "a terrain sphere (x, y, psi, phi, the shell's quaternion)");
+  state_ = {numbers[0], numbers[1], numbers[2], numbers[3]};
+  orientation_ = Eigen::Quaterniond(numbers[4], numbers[5], numbers[6], numbers[7]);
+}
+
+std::vector<std::string> TerrainPlantRos::sharedParameters() const {
+  return {"robot_description", "terrain"};  // the surface and the tilt limit
+}
+
 std::string TerrainPlantRos::describeState() const {
   std::ostringstream text;
   text << "contact point at (" << state_.x << ", " << state_.y << ") m";

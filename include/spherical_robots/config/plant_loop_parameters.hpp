@@ -35,6 +35,9 @@ struct PlantLoopParameters {
   double origin_x = 0.0;    ///< [m]
   double origin_y = 0.0;    ///< [m]
   double origin_yaw = 0.0;  ///< [rad]
+  /// Where the plant keeps the checkpoint a restarted plant resumes from: "none" (it keeps
+  /// none), "ros_home" ($ROS_HOME/checkpoints) or an absolute directory.
+  std::string checkpoint = "none";
 };
 
 /// The plant's private parameters over `defaults` (each plant's: step, state_timeout,
@@ -43,7 +46,8 @@ struct PlantLoopParameters {
 /// clock (lockstep | free | ros, "ros"), speedup (lockstep: default 0, >= 0; free: > 0),
 /// lockstep_leader and lockstep_timeout, read in lockstep only (default 2 s, 1 s with a leader: a follower drops its own
 /// silent participant before the leader would drop the follower), wait_for_subscribers
-/// (integer >= 0), start_timeout, origin_x, origin_y, origin_yaw (finite).
+/// (integer >= 0), start_timeout, origin_x, origin_y, origin_yaw (finite), checkpoint (none,
+/// ros_home or an absolute directory).
 /// @throw std::invalid_argument naming the origin, the key, the value and the limit.
 PlantLoopParameters loadPlantLoopParameters(const ParameterSource& source,
                                             const PlantLoopParameters& defaults);

@@ -30,6 +30,9 @@ class LoopTimeline {
 
   /// A tick at `now` [ns]. A tick at 0 (no clock yet) does not start the scenario.
   Tick tick(Nanoseconds now);
+  /// Goes on from a checkpoint (core/plant_checkpoint) of a timeline that started at `start` and
+  /// last ticked at `last_tick` [ns]: the next tick advances by the time since last_tick.
+  void resume(Nanoseconds start, Nanoseconds last_tick);
   /// True from the first tick at least duration - 1 ns after the start (the node logs and shuts
   /// down then; later ticks are to be ignored).
   bool complete(Nanoseconds now);

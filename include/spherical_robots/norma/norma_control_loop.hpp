@@ -1,6 +1,7 @@
 #pragma once
 // Norma's controller run as a sampled loop over time, with time as a number (no ROS): the path
-// clock of eq 52 (from the first state), the three PID integrals (Fig. 5) advanced by the time
+// clock of eq 52 (from the first state, or from a start kept across a restart of the
+// controller, so that a respawned one follows the run's path, not a new one), the three PID integrals (Fig. 5) advanced by the time
 // between states, and the rules that keep them sane when the input or the actuators misbehave.
 //
 // * Validate before update: a state that is non-finite, implausible or would give a non-finite
@@ -12,6 +13,7 @@
 //   releasing an e-stop resumes tracking instead of firing a wound-up effort.
 
 #include <Eigen/Core>
+#include <optional>
 
 #include "spherical_robots/norma/norma_controller.hpp"
 
@@ -49,7 +51,8 @@ class NormaControlLoop {
                    double jump_back = 1.0, NormaStateBounds bounds = {});
 
   /// The command for the state measured at t [s]. The first state, or one more than jump_back
-  /// earlier than the last accepted one, restarts the path clock and the integrals.
+  /// earlier than the last accepted one, restarts the integrals, and the path clock from t
+  /// unless it was given (startPathAt).
   /// @throw std::invalid_argument naming the problem (non-finite or implausible t or state, a
   ///        state not later than the last one but within jump_back of it, or a non-finite
   ///        command); nothing changes then.
@@ -63,8 +66,13 @@ class NormaControlLoop {
   /// Integral i is held for the next step (saturation or stopped actuators).
   bool integralHeld(int i) const;
 
-  /// The desired point of eq 52 at t [s] on this loop's path clock (t − the first state's time).
+  /// The desired point of eq 52 at t [s] on this loop's path clock (t − the path's start).
   PathPoint reference(double t) const;
+  /// The path of eq 52 starts at t0 [s] (the run's, which a respawned controller was given),
+  /// whatever the time of the first state. @throw std::invalid_argument if t0 is not finite.
+  void startPathAt(double t0);
+  /// [s] when the path started; none before the first state unless startPathAt was called.
+  std::optional<double> pathStart() const;
   const Eigen::Vector3d& integrals() const { return integrals_; }
   const ControlOutput& lastOutput() const { return last_output_; }
   const NormaController& controller() const { return controller_; }
@@ -84,6 +92,7 @@ class NormaControlLoop {
   NormaStateBounds bounds_;
   bool started_ = false;
   double path_start_ = 0.0;
+  bool path_start_given_ = false;
   double last_t_ = 0.0;
   Eigen::Vector3d integrals_ = Eigen::Vector3d::Zero();
   ControlOutput last_output_;

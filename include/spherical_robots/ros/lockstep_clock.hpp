@@ -52,6 +52,7 @@ class LockstepClock : public PlantClock {
   LockstepClock(ros::NodeHandle nh, Settings settings, Tick tick, Ready ready);
 
   ros::Time now() const override { return now_; }
+  void resumeAt(const ros::Time& t) override { now_ = t; }
   double realTimeFactor() const override;
   void received(const std::string& topic, const ros::Time& stamp) override;
   void report(diagnostic_updater::DiagnosticStatusWrapper& status) override;

@@ -68,7 +68,12 @@ class NormaControllerRos {
   /// dynamic_reconfigure: new gains through norma::validate, as at start-up; a refused change
   /// keeps the last good gains and hands them back in config.
   void onReconfigure(spherical_robots::NormaControllerConfig& config, std::uint32_t level);
+  /// A controller respawned within a launch takes up the path start of eq 52 that its first
+  /// incarnation kept in ~path_start, so that it tracks the run's path, not a new one.
+  void resumePathStart();
+  void keepPathStart();
 
+  ros::NodeHandle pnh_;
   NormaControllerParameters parameters_;
   norma::NormaParameters robot_;
   norma::NormaControlLoop loop_;
@@ -92,6 +97,8 @@ class NormaControllerRos {
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)
   std::string reconfigure_problem_;   ///< why the last refused reconfiguration was refused
+  std::string run_id_;                ///< roslaunch's /run_id; empty: no path start is kept
+  bool path_start_kept_ = false;      ///< ~path_start holds this launch's path start
   std::unique_ptr<dynamic_reconfigure::Server<spherical_robots::NormaControllerConfig>> reconfigure_;
 };
 

@@ -41,6 +41,8 @@ class NormaPlantRos : private PlantModel {
   std::optional<Pose> trailPose() const override;
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) override;
   std::string describeState() const override;
+  std::optional<std::vector<double>> checkpointState() const override;
+  void resumeState(const std::vector<double>& state) override;
   /// The sphere's centre in odom [m].
   Eigen::Vector3d centre() const;
 

@@ -43,6 +43,9 @@ class PlantClock {
   /// The scenario is over: stop stepping and shut the node down (in lock-step after a second of
   /// wall time, so that observers such as a recorder receive the last messages first).
   virtual void finish();
+  /// Before time starts: the clock goes on from `t` (a restarted plant's checkpoint), so that
+  /// its first step is t + step and /clock never goes back. Only a clock the plant owns moves.
+  virtual void resumeAt(const ros::Time& /*t*/) {}
 
  protected:
   virtual const char* mode() const = 0;

@@ -17,6 +17,7 @@
 
 #include "spherical_robots/config/plant_loop_parameters.hpp"
 #include "spherical_robots/core/periodic_schedule.hpp"
+#include "spherical_robots/core/plant_checkpoint.hpp"
 #include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/input_monitor.hpp"
 #include "spherical_robots/ros/loop_publishers.hpp"
@@ -53,6 +54,14 @@ class PlantModel {
   virtual void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) = 0;
   /// Where the model ended, for the "scenario complete" log line (e.g. "centre at (1, 2) m").
   virtual std::string describeState() const = 0;
+  /// The model's state as numbers, which a restarted plant resumes from (~checkpoint); none:
+  /// this plant keeps no checkpoint.
+  virtual std::optional<std::vector<double>> checkpointState() const { return std::nullopt; }
+  /// Takes up a state that checkpointState gave. @throw std::invalid_argument if it is none.
+  virtual void resumeState(const std::vector<double>& /*state*/) {}
+  /// The parameters of the stack's namespace its model is made of besides its private ones
+  /// (they are part of the checkpoint's fingerprint).
+  virtual std::vector<std::string> sharedParameters() const { return {"robot_description"}; }
 };
 
 class PlantLoop {
@@ -90,6 +99,10 @@ class PlantLoop {
   void start(PlantModel& model, const LoopPublisher& state, double state_rate);
 
  private:
+  /// Resumes the model and the timeline from the checkpoint of this run, if there is one.
+  /// Returns the time to go on from (zero: a fresh start).
+  ros::Time resume();
+  void writeCheckpoint(const ros::Time& now);
   void onActuatorState(const sensor_msgs::JointState& msg);
   std::vector<std::string> tick(const ros::Time& now);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
@@ -109,6 +122,9 @@ class PlantLoop {
   std::string state_topic_;
   std::unique_ptr<TopicRate> state_rate_;
   PlantModel* model_ = nullptr;
+  std::optional<PlantCheckpointWriter> checkpoint_;  ///< none: no checkpoint
+  CheckpointKey checkpoint_key_;
+  unsigned long checkpoint_failures_ = 0;
   ros::Subscriber actuator_sub_;
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;   ///< reports on wall time (diagnostics_timer.hpp)

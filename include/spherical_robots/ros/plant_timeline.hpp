@@ -30,6 +30,10 @@ class PlantTimeline {
   /// be ignored.
   bool complete(const ros::Time& now);
   bool finished() const { return timeline_.finished(); }
+  /// As LoopTimeline::resume: from a checkpoint's start and time.
+  void resume(const ros::Time& start, const ros::Time& last_tick);
+  /// [ns] the first tick; 0 before it.
+  Nanoseconds start() const { return timeline_.start(); }
   double duration() const { return timeline_.duration(); }
 
   /// Adds "time since start [s]", "clock jumps" and "integration failures", and raises ERROR if the model

@@ -30,6 +30,9 @@ class SimClock : public PlantClock {
 
   bool ownsClock() const { return speedup_ > 0.0; }
   ros::Time now() const override;
+  void resumeAt(const ros::Time& t) override {
+    if (ownsClock()) now_ = t;
+  }
   double realTimeFactor() const override;
 
  protected:

@@ -49,6 +49,9 @@ class TerrainPlantRos : private PlantModel {
   std::optional<Pose> trailPose() const override;
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status) override;
   std::string describeState() const override;
+  std::optional<std::vector<double>> checkpointState() const override;
+  void resumeState(const std::vector<double>& state) override;
+  std::vector<std::string> sharedParameters() const override;
 
   terrain::DriveRates rates(bool actuators_fresh) const;
   /// base_link's exact pose and twist at the current state with these realised rates.
