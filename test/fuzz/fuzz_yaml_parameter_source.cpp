@@ -79,9 +79,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const config::TerrainConfig terrain = config::loadTerrainConfig(*source);
     if (terrain.surface.type != "height_map") making([&] { config::makeSurface(terrain.surface); });
     for (const char* name : {"circle", "diamond"}) making([&] { config::makePath(name, terrain); });
-    for (const auto& [type, name] : terrain::kRobotTypeNames) {
+    for (const auto& type_name : terrain::kRobotTypeNames) {
       for (const terrain::PursuitLaw law : {terrain::PursuitLaw::Paper, terrain::PursuitLaw::Smooth}) {
-        making([&] { config::makePursuitController(law, type, terrain, 0.2); });
+        making([&] { config::makePursuitController(law, type_name.first, terrain, 0.2); });
       }
     }
   });
