@@ -13,9 +13,9 @@ set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 cd "$SR_ROOT"
 
-# 3000 executions a target: the 15 targets take about 40 s together on a busy 2-core machine
+# 5000 executions a target: the 16 targets take about 30 s together on a busy 2-core machine
 # (figures in test/fuzz/README.md), the first build about 6 minutes and a rebuild seconds.
-short_runs=3000
+short_runs=5000
 long_runs=10000000
 max_time=1800
 short=false

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -65,10 +66,31 @@ class FuzzNumbers {
   std::size_t position_ = 0;
 };
 
-/// The input written to a file of this process (its name ends with `suffix`), for the readers
-/// that take a path; rewritten on every call.
-inline std::string inputFile(const std::uint8_t* data, std::size_t size, const std::string& suffix) {
-  const std::string path = "/tmp/spherical_robots_fuzz_" + std::to_string(getpid()) + suffix;
+/// A directory of this process's own, removed when it exits: in memory (/dev/shm) where there is
+/// one, as the readers under test open their files thousands of times a second.
+inline const std::string& scratchDirectory() {
+  struct Scratch {
+    std::string path;
+    Scratch() {
+      const std::filesystem::path shm("/dev/shm");
+      path = ((std::filesystem::is_directory(shm) ? shm : std::filesystem::temp_directory_path()) /
+              ("spherical_robots_fuzz_" + std::to_string(getpid())))
+                 .string();
+      std::filesystem::create_directories(path);
+    }
+    ~Scratch() {
+      std::error_code ignored;
+      std::filesystem::remove_all(path, ignored);
+    }
+  };
+  static const Scratch scratch;
+  return scratch.path;
+}
+
+/// The input written to scratchDirectory()/name, for the readers that take a path; rewritten on
+/// every call.
+inline std::string inputFile(const std::uint8_t* data, std::size_t size, const std::string& name) {
+  const std::string path = scratchDirectory() + "/" + name;
   std::ofstream file(path, std::ios::binary | std::ios::trunc);
   file.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   if (!file.flush()) {

@@ -14,10 +14,9 @@
 
 namespace {
 
-/// The directory of this process's files, with grid.csv and grid.pgm: 8 x 8 samples of a bump.
+/// The scratch directory, with grid.csv and grid.pgm: 8 x 8 samples of a bump.
 std::string mapDirectory() {
-  const std::string directory = "/tmp/spherical_robots_fuzz_map_" + std::to_string(getpid());
-  std::filesystem::create_directories(directory);
+  const std::string& directory = spherical_robots::fuzz::scratchDirectory();
   std::ofstream csv(directory + "/grid.csv"), pgm(directory + "/grid.pgm", std::ios::binary);
   pgm << "P5\n8 8\n255\n";
   for (int r = 0; r < 8; ++r) {
@@ -36,9 +35,7 @@ std::string mapDirectory() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace spherical_robots;
   static const std::string directory = mapDirectory();
-  const std::string path = directory + "/map.yaml";
-  std::ofstream(path, std::ios::binary | std::ios::trunc)
-      .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  const std::string path = fuzz::inputFile(data, size, "map.yaml");
   try {
     config::loadHeightMap(path);
     config::SurfaceSpec spec;

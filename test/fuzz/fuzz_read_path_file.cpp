@@ -10,7 +10,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace spherical_robots;
-  const std::string path = fuzz::inputFile(data, size, ".csv");
+  const std::string path = fuzz::inputFile(data, size, "input.csv");
   for (const std::optional<double> speed : {std::optional<double>(0.5), std::optional<double>()}) {
     try {
       sphere_sim::readPathFile(path, speed);

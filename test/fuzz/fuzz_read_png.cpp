@@ -7,7 +7,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace spherical_robots;
-  const std::string path = fuzz::inputFile(data, size, ".png");
+  const std::string path = fuzz::inputFile(data, size, "input.png");
   try {
     config::readPng(path);
   } catch (const std::invalid_argument& error) {

@@ -51,7 +51,7 @@ void readEverything(const config::ParameterSource& source, const std::string& pr
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string path = fuzz::inputFile(data, size, ".yaml");
+  const std::string path = fuzz::inputFile(data, size, "input.yaml");
   std::optional<config::YamlParameterSource> source;
   try {
     source.emplace(path, [](const std::string&) {});
