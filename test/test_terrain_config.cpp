@@ -213,6 +213,18 @@ TEST(YamlParameterSource, ReadsNestedKeysAndReportsAbsentOnes) {
   EXPECT_EQ(src.origin(), file.path());
 }
 
+// fuzz_load_height_map's finding (test/fuzz/corpus/fuzz_load_height_map/list_as_key.yaml): a key
+// that is a YAML list, as a line "[-8.05, -4.05, 0.0]: x" makes one, escaped keys() as yaml-cpp's
+// conversion error, which no reader catches (a height map's YAML, whose keys are checked, ended
+// the process).
+TEST(YamlParameterSource, RejectsAKeyThatIsNotANameNamingTheFileAndLine) {
+  const TempYaml file("image: grid.pgm\n[-8.05, -4.05, 0.0]: corner\nterrain:\n  {a: 1}: 2\n");
+  const YamlParameterSource src(file.path());
+  EXPECT_INVALID_ARGUMENT(src.keys(""), file.path(), "line 2", "-8.05", "expected a name");
+  EXPECT_INVALID_ARGUMENT(src.keys("terrain"), file.path(), "line 4", "a key of 'terrain'");
+  EXPECT_EQ(src.text("image"), std::optional<std::string>("grid.pgm"));
+}
+
 // ------------------------------------------------------------------------------------------
 // Factories.
 

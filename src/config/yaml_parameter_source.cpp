@@ -102,7 +102,16 @@ std::optional<std::vector<std::string>> YamlParameterSource::keys(const std::str
                                 YAML::Dump(node) + "'");
   }
   std::vector<std::string> result;
-  for (const auto& entry : node) result.push_back(entry.first.as<std::string>());
+  for (const auto& entry : node) {
+    // A YAML key may be a list or a dictionary ("[1, 2]: x"); a parameter's name is a word.
+    if (!entry.first.IsScalar()) {
+      std::ostringstream message;
+      message << path_ << ": line " << entry.first.Mark().line + 1 << ": a key of '" << key
+              << "' is '" << YAML::Dump(entry.first) << "', expected a name";
+      throw std::invalid_argument(message.str());
+    }
+    result.push_back(entry.first.Scalar());
+  }
   return result;
 }
 
