@@ -109,4 +109,16 @@ inline void requireNamesFile(const std::exception& error, const std::string& pat
   }
 }
 
+/// The input as the file `name`, given to `read` (a reader that takes a path), whose
+/// std::invalid_argument must name the file.
+template <typename Read>
+void readInputFile(const std::uint8_t* data, std::size_t size, const std::string& name, Read read) {
+  const std::string path = inputFile(data, size, name);
+  try {
+    read(path);
+  } catch (const std::invalid_argument& error) {
+    requireNamesFile(error, path);
+  }
+}
+
 }  // namespace spherical_robots::fuzz
