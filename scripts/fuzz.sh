@@ -35,7 +35,7 @@ build=$SR_ROOT/build-fuzz
 build_fuzz_targets() {
   cmake -S test/fuzz -B "$build" -DCMAKE_CXX_COMPILER=clang++ > "$build/configure.log" 2>&1 \
     || { cat "$build/configure.log"; return 1; }
-  make -C "$build" -j2 --no-print-directory > "$build/make.log" 2>&1 || { tail -40 "$build/make.log"; return 1; }
+  make -C "$build" -j2 --no-print-directory fuzz_targets > "$build/make.log" 2>&1 || { tail -40 "$build/make.log"; return 1; }
 }
 mkdir -p "$build"
 sr_step "build the fuzz targets (clang, ASan + UBSan, build-fuzz/)" build_fuzz_targets
