@@ -16,7 +16,7 @@ build_sanitized_tests() {
   mkdir -p "$build"
   cmake -S test/fuzz -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DSANITIZED_TESTS=ON \
     > "$build/configure.log" 2>&1 || { cat "$build/configure.log"; return 1; }
-  make -C "$build" -j2 --no-print-directory sanitized_tests > "$build/make_tests.log" 2>&1 \
+  make -C "$build" -j2 -k --no-print-directory sanitized_tests > "$build/make_tests.log" 2>&1 \
     || { tail -40 "$build/make_tests.log"; return 1; }
 }
 run_sanitized_tests() {
