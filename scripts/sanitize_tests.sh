@@ -4,8 +4,9 @@
 # included) and UndefinedBehaviorSanitizer, then run: any report fails its test, so the expected
 # outcome is every test passing with 0 reports. The build is test/fuzz/CMakeLists.txt with
 # -DSANITIZED_TESTS=ON, in build-fuzz/, sharing the sanitized core with scripts/fuzz.sh.
-# Not part of scripts/run_tests.sh (the CI): it compiles every gtest a second time with clang and
-# the sanitizers (about N minutes on a busy 2-core machine, README.md "Tests"); run it by hand.
+# Not part of scripts/run_tests.sh (the CI): it is a second full build (every gtest compiled again
+# with clang and the sanitizers, about 12 minutes on a busy 2-core machine, after the sanitized
+# core that fuzz.sh also builds) and the sanitized gtests run for about 27 minutes; run it by hand.
 # Exit status: ctest's (0: every test passed).
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/env.sh"
