@@ -13,8 +13,9 @@ set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 cd "$SR_ROOT"
 
-# 5000 executions a target: the 16 targets take about 30 s together on a busy 2-core machine
-# (figures in test/fuzz/README.md), the first build about 6 minutes and a rebuild seconds.
+# 5000 executions a target: the 16 targets take 22 s together on an idle 2-core machine and 53 s
+# with both cores busy (the YAML readers' target is most of it); the first build takes 4 minutes
+# (7 on a busy machine), a rebuild seconds.
 short_runs=5000
 long_runs=10000000
 max_time=1800
