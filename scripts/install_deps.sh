@@ -22,6 +22,9 @@ packages=(
   libeigen3-dev liburdfdom-dev libboost-dev libyaml-cpp-dev
   # height maps: 16-bit PNG (src/config/height_map_files.cpp)
   libpng-dev
+  # the fuzz targets and the sanitized gtests (scripts/fuzz.sh, scripts/sanitize_tests.sh):
+  # libFuzzer ships only with clang's runtime libraries (libclang-rt), not with GCC
+  clang libclang-rt-14-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev googletest libbenchmark-dev librostest-dev python3-rostest catkin-lint
   topic-tools

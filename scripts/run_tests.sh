@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages, builds, and runs every gtest and rostest of the package
 # (colcon test, under a virtual X server; two tests at a time: in lock-step a stack's results do
-# not depend on how busy the machine is, and the replay tests share the display by a lock), then
-# prints the summary.
-# Exit status: 0 only if at least one test ran and none failed.
+# not depend on how busy the machine is, and the replay tests share the display by a lock) and the
+# fuzz targets for a fixed number of executions (scripts/fuzz.sh --short), then prints the summary.
+# Exit status: 0 only if at least one test ran, none failed and the fuzzing found nothing.
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 cd "$SR_ROOT"
@@ -28,6 +28,11 @@ sr_step "run gtests and rostests (colcon test, xvfb-run)" \
     --ctest-args --timeout 900 -j2 \
   || test_rc=$?
 
+# The libFuzzer targets, a fixed number of executions each, in their own clang build
+# (build-fuzz/, apart from colcon's); scripts/fuzz.sh without --short is the long form.
+fuzz_rc=0
+sr_step "fuzz the core's entry points (scripts/fuzz.sh --short)" scripts/fuzz.sh --short || fuzz_rc=$?
+
 colcon test-result --test-result-base build --verbose || true
 summary=$(colcon test-result --test-result-base build | grep '^Summary:' || true)
 sr_log "${summary:-Summary: no test results found}   (ROS logs: $ROS_HOME/log)"
@@ -49,5 +54,8 @@ if [ -n "$silent" ]; then
 fi
 if [ "$errors" -ne 0 ] || [ "$failures" -ne 0 ] || [ "$test_rc" -ne 0 ]; then
   sr_log "FAILED: $failures failures, $errors errors (colcon test exit $test_rc)"; exit 1
+fi
+if [ "$fuzz_rc" -ne 0 ]; then
+  sr_log "FAILED: scripts/fuzz.sh --short (exit $fuzz_rc): its findings are named above"; exit 1
 fi
 sr_log "OK: $ran tests ran ($skipped of them skipped), none failed"

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "expect_invalid_argument.hpp"
+#include "spherical_robots/config/height_map_files.hpp"
 #include "spherical_robots/config/height_map_loader.hpp"
 #include "spherical_robots/config/terrain_config.hpp"
 #include "spherical_robots/terrain/height_map_surface.hpp"
@@ -155,6 +156,16 @@ TEST(HeightMapLoader, PgmRoundTripAndBadSamples) {
   EXPECT_INVALID_ARGUMENT(config::loadHeightMap(yaml.path()), image.path(), "after 13 of 108 samples");
   image.write("P2\n12 9\n255\n0 0 0");
   EXPECT_INVALID_ARGUMENT(config::loadHeightMap(yaml.path()), image.path(), "P2", "P5");
+}
+
+// fuzz_read_pgm's finding (test/fuzz/corpus/fuzz_read_pgm/huge_header.pgm): the header's size
+// was allocated before the file was seen to be shorter, so a corrupt header of a few bytes asked
+// for gigabytes (here 2 TiB: std::bad_alloc, or the process killed for its memory).
+TEST(HeightMapLoader, APgmHeaderLargerThanItsFileIsRefusedWithoutAllocatingIt) {
+  TempFile image("huge.pgm");
+  image.write(std::string("P5\n1048576 1048576\n65535\n") + std::string(5, '\x01'));
+  EXPECT_INVALID_ARGUMENT(config::readPgm(image.path()), image.path(),
+                          "after 2 of 1099511627776 samples (1048576 x 1048576)");
 }
 
 TEST(HeightMapLoader, CsvRoundTripKeepsEveryDigit) {

@@ -288,6 +288,17 @@ TEST(GaussianSmoothed, LeavesPlanesAndAttenuatesACosineAsItsTransform) {
   EXPECT_INVALID_ARGUMENT(terrain::gaussianSmoothed(wave, -1.0), "sigma");
 }
 
+// fuzz_height_map_surface's finding (test/fuzz/corpus/fuzz_height_map_surface/huge_sigma): a sigma
+// whose 4-sigma reach exceeds every index was converted to one, undefined behaviour, before the
+// check against the map's size.
+TEST(GaussianSmoothed, RejectsASigmaBeyondAnyIndexNamingTheMapsSize) {
+  const HeightGrid flat = sampled([](double, double) { return 0.0; }, 0.0, 0.0, 0.1, 7, 5);
+  for (const double sigma : {1e19, 1e300, std::numeric_limits<double>::max()}) {
+    EXPECT_INVALID_ARGUMENT(terrain::gaussianSmoothed(flat, sigma), "smoothing sigma", "7 x 5")
+        << sigma;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -239,6 +239,21 @@ TEST(SampledPath, IncreasingStampsAreTimesFromTheFirstAndEqualOnesUntimed) {
   }
 }
 
+// fuzz_read_path_file's finding (test/fuzz/corpus/fuzz_read_path_file/huge_coordinate.csv): the
+// shipped S-curve with one y typed as 1e41 m gave the points after it the same time in double
+// precision (2e42 s + 5.8 s = 2e42 s), so the spline's system was singular and a std::logic_error
+// (a bug's exception) ended sphere_sim with an internal error.
+TEST(SampledPath, UntimedPointsWhoseTimesDoubleCannotTellApartAreRefusedNamingThePoint) {
+  const std::vector<Eigen::Vector2d> points = {{0.0, 0.0}, {0.5, 0.0}, {1.0, 1e41}, {1.5, 0.3},
+                                               {2.0, 0.6}, {2.4, 1.0}, {2.6, 1.5}};
+  // Point 2 is 1e41 m out and point 3 as far back: 2e42 s; point 4's 5.83 s step is lost.
+  EXPECT_INVALID_ARGUMENT(SampledPath::atSpeed(points, 0.1), "path point 4", "2e+42 s + 5.83",
+                          "not a finite time after the point before's");
+  // A time beyond a double's range: 1e308 m at 0.1 m/s.
+  EXPECT_INVALID_ARGUMENT(SampledPath::atSpeed({{0.0, 0.0}, {1e308, 0.0}}, 0.1), "path point 1",
+                          "not a finite time");
+}
+
 TEST(SampledPath, BadPointsAreRefusedNamingTheirIndexAndValue) {
   using spherical_robots::test_support::throwsInvalidArgumentNaming;
   EXPECT_TRUE(throwsInvalidArgumentNaming([] { SampledPath::timed({{0.0, {1.0, 1.0}}}); },

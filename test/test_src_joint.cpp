@@ -140,10 +140,12 @@ TEST_P(RadiiTest, ContactSweepsEqualArcsAndIsAtRest) {
   double arc_link = 0.0;
   double worst_contact_speed = 0.0;
   double largest_speed = 0.0;
-  const auto contact_on_base = [&](const SrcJointState& s) {
+  // Copied in: a lambda may capture a structured binding only from C++20 on (clang 14, which
+  // builds scripts/sanitize_tests.sh, refuses it in C++17).
+  const auto contact_on_base = [&, base = base](const SrcJointState& s) {
     return Eigen::Vector3d(base * joint.position(s).normalized());
   };
-  const auto contact_on_link = [&](const SrcJointState& s) {  // in B_i's own frame
+  const auto contact_on_link = [&, link = link](const SrcJointState& s) {  // in B_i's own frame
     return Eigen::Vector3d(SrcJoint::jointQuaternion(s).conjugate() *
                            (-link * joint.position(s).normalized()));
   };
@@ -274,7 +276,7 @@ TEST(SrcJointTest, FreeModesAreTheRollingVelocity) {
     const double sum = base + link;
     for (int axis = 0; axis < 2; ++axis) {
       const Eigen::Vector3d e = Eigen::Vector3d::Unit(axis);
-      const auto rolled = [&](double s) {
+      const auto rolled = [&, base = base, link = link](double s) {  // copies: as above
         SrcJointState out;
         out.link = angleAxis(s * base / sum * e) * state.link;
         out.base = angleAxis(-s * link / sum * e) * state.base;

@@ -276,6 +276,18 @@ TEST(YamlParameterSource, TheLoadersReadEveryKeyOfTheShippedTerrainFileButTheSta
   EXPECT_EQ(unread, (std::vector<std::string>{"pure_pursuit_controller/untimed_speed"}));
 }
 
+// fuzz_load_height_map's finding (test/fuzz/corpus/fuzz_load_height_map/list_as_key.yaml): a key
+// that is a YAML list, as a line "[-8.05, -4.05, 0.0]: x" makes one, escaped the readers as
+// yaml-cpp's conversion error (a height map's YAML ended the process); the file is now refused.
+TEST(YamlParameterSource, RejectsAKeyThatIsNotANameNamingTheFileAndLine) {
+  const TempYaml top("image: grid.pgm\n[-8.05, -4.05, 0.0]: corner\n");
+  EXPECT_INVALID_ARGUMENT(YamlParameterSource{top.path()}, top.path() + " line 2", "-8.05",
+                          "expected a name");
+  const TempYaml nested("image: grid.pgm\nterrain:\n  {a: 1}: 2\n");
+  EXPECT_INVALID_ARGUMENT(YamlParameterSource{nested.path()}, nested.path() + " line 3",
+                          "a key of 'terrain'", "expected a name");
+}
+
 // ------------------------------------------------------------------------------------------
 // Factories.
 

@@ -2,6 +2,7 @@
 
 #include <png.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -183,13 +184,23 @@ GreyImage readPgm(const std::string& path) {
   image.max_level = header.number("maxval", 65535);
   in.get();  // the single whitespace character between maxval and the samples
   const std::size_t bytes = image.max_level > 255 ? 2 : 1;
-  std::vector<unsigned char> data(static_cast<std::size_t>(width) * height * bytes);
-  in.read(reinterpret_cast<char*>(data.data()), static_cast<std::streamsize>(data.size()));
-  if (static_cast<std::size_t>(in.gcount()) != data.size()) {
-    throw fileError(path, "PGM data ends after " + std::to_string(in.gcount() / bytes) + " of " +
-                              std::to_string(static_cast<std::size_t>(width) * height) +
-                              " samples (" + std::to_string(width) + " x " +
-                              std::to_string(height) + ")");
+  const std::size_t samples = static_cast<std::size_t>(width) * height;
+  // The file's length is checked before the header's size is allocated: a corrupt header may
+  // promise gigabytes (2^20 x 2^20 samples) in a file of a few bytes.
+  const std::streampos data_start = in.tellg();
+  in.seekg(0, std::ios::end);
+  const std::streamoff available = in.tellg() - data_start;
+  in.seekg(data_start);
+  std::vector<unsigned char> data;
+  if (in && available >= 0 && static_cast<std::size_t>(available) >= samples * bytes) {
+    data.resize(samples * bytes);
+    in.read(reinterpret_cast<char*>(data.data()), static_cast<std::streamsize>(data.size()));
+  }
+  if (data.empty() || static_cast<std::size_t>(in.gcount()) != data.size()) {
+    const std::streamoff read = std::max<std::streamoff>(data.empty() ? available : in.gcount(), 0);
+    throw fileError(path, "PGM data ends after " + std::to_string(read / static_cast<std::streamoff>(bytes)) +
+                              " of " + std::to_string(samples) + " samples (" +
+                              std::to_string(width) + " x " + std::to_string(height) + ")");
   }
   image.levels.resize(height, width);
   for (unsigned r = 0; r < height; ++r) {

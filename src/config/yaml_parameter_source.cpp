@@ -19,7 +19,7 @@ std::string joined(const std::string& parent, const std::string& child) {
 }
 
 /// yaml-cpp keeps a key given twice in a dictionary and reads the first: a later value, which the
-/// author meant, would be silently ignored.
+/// author meant, would be silently ignored. A key must be a name, not a list or a dictionary.
 void refuseRepeatedKeys(const YAML::Node& node, const std::string& key, const std::string& path) {
   if (node.IsSequence()) {
     for (const YAML::Node& item : node) refuseRepeatedKeys(item, key, path);
@@ -28,7 +28,13 @@ void refuseRepeatedKeys(const YAML::Node& node, const std::string& key, const st
   if (!node.IsMap()) return;
   std::set<std::string> seen;
   for (const auto& entry : node) {
-    const std::string name = entry.first.as<std::string>();
+    // A YAML key may be a list or a dictionary ("[1, 2]: x"); a parameter's name is a word.
+    if (!entry.first.IsScalar()) {
+      throw std::invalid_argument(path + lineOf(entry.first) + ": " +
+                                  (key.empty() ? std::string("a key") : "a key of '" + key + "'") +
+                                  " is '" + YAML::Dump(entry.first) + "', expected a name");
+    }
+    const std::string name = entry.first.Scalar();
     if (!seen.insert(name).second) {
       throw std::invalid_argument(path + lineOf(entry.first) + ": parameter '" + joined(key, name) +
                                   "' is given twice");
@@ -66,11 +72,11 @@ std::vector<YamlParameterSource::Key> YamlParameterSource::unreadKeys(
           unread.push_back({key, node.Mark().line + 1});
           return;
         }
-        for (const auto& entry : node) visit(entry.second, joined(key, entry.first.as<std::string>()));
+        for (const auto& entry : node) visit(entry.second, joined(key, entry.first.Scalar()));
       };
   const YAML::Node node = find(section);
   if (node.IsMap()) {
-    for (const auto& entry : node) visit(entry.second, joined(section, entry.first.as<std::string>()));
+    for (const auto& entry : node) visit(entry.second, joined(section, entry.first.Scalar()));
   }
   return unread;
 }
@@ -180,7 +186,7 @@ std::optional<std::vector<std::string>> YamlParameterSource::keys(const std::str
                                 YAML::Dump(node) + "'");
   }
   std::vector<std::string> result;
-  for (const auto& entry : node) result.push_back(entry.first.as<std::string>());
+  for (const auto& entry : node) result.push_back(entry.first.Scalar());  // names: the constructor
   return result;
 }
 

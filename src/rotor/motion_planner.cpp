@@ -291,35 +291,6 @@ std::optional<double> shiftRatio(double eta, int steps) {
   return std::nullopt;
 }
 
-void requireRequest(const PlanRequest& request) {
-  requireFinite(request.k, "inertia ratio k");
-  if (request.k < 0.0) {
-    std::ostringstream message;
-    message << "inertia ratio k must be >= 0, got " << request.k;
-    throw std::invalid_argument(message.str());
-  }
-  if (request.steps < 1 || request.steps > kMaxSteps) {
-    throw std::invalid_argument("number of steps n must be in [1, " + std::to_string(kMaxSteps) +
-                                "], got " + std::to_string(request.steps));
-  }
-  requireMagnitudeAtMost(request.k, kMaxInertiaRatio, "inertia ratio k");
-  requireMagnitudeAtMost(request.u_a, kMaxTargetDistance, "target u_a [R]");
-  requireMagnitudeAtMost(request.v_a, kMaxTargetDistance, "target v_a [R]");
-  requireMagnitudeAtMost(request.psi, kMaxTargetHeading, "target psi [rad]");
-  requirePositive(request.max_radius, "max radius [R]");
-  if (request.max_radius >= kMaxCircleRadius) {
-    std::ostringstream message;
-    message << "max radius [R] must be < " << kMaxCircleRadius
-            << " (sqrt(2)/2: larger circles reach the equator, where eq 30 is singular), got "
-            << request.max_radius;
-    throw std::invalid_argument(message.str());
-  }
-  if (request.heading_turns < 0 || request.heading_turns > kMaxHeadingTurns) {
-    throw std::invalid_argument("heading turns must be in [0, " +
-                                std::to_string(kMaxHeadingTurns) + "], got " +
-                                std::to_string(request.heading_turns));
-  }
-}
 
 /// Plans for one accumulated target heading ψ; appends a reason when there is no plan.
 std::vector<RotorPlan> planHeading(const PlanRequest& request, double psi, const LeafTable& table,
@@ -394,8 +365,38 @@ std::vector<RotorPlan> planHeading(const PlanRequest& request, double psi, const
 
 }  // namespace
 
+void requireValid(const PlanRequest& request) {
+  requireFinite(request.k, "inertia ratio k");
+  if (request.k < 0.0) {
+    std::ostringstream message;
+    message << "inertia ratio k must be >= 0, got " << request.k;
+    throw std::invalid_argument(message.str());
+  }
+  if (request.steps < 1 || request.steps > kMaxSteps) {
+    throw std::invalid_argument("number of steps n must be in [1, " + std::to_string(kMaxSteps) +
+                                "], got " + std::to_string(request.steps));
+  }
+  requireMagnitudeAtMost(request.k, kMaxInertiaRatio, "inertia ratio k");
+  requireMagnitudeAtMost(request.u_a, kMaxTargetDistance, "target u_a [R]");
+  requireMagnitudeAtMost(request.v_a, kMaxTargetDistance, "target v_a [R]");
+  requireMagnitudeAtMost(request.psi, kMaxTargetHeading, "target psi [rad]");
+  requirePositive(request.max_radius, "max radius [R]");
+  if (request.max_radius >= kMaxCircleRadius) {
+    std::ostringstream message;
+    message << "max radius [R] must be < " << kMaxCircleRadius
+            << " (sqrt(2)/2: larger circles reach the equator, where eq 30 is singular), got "
+            << request.max_radius;
+    throw std::invalid_argument(message.str());
+  }
+  if (request.heading_turns < 0 || request.heading_turns > kMaxHeadingTurns) {
+    throw std::invalid_argument("heading turns must be in [0, " +
+                                std::to_string(kMaxHeadingTurns) + "], got " +
+                                std::to_string(request.heading_turns));
+  }
+}
+
 PlanResult planRotorMotion(const PlanRequest& request) {
-  requireRequest(request);
+  requireValid(request);
   const LeafTable table = tabulateLeaves(request.k, request.max_radius);
   const PhaseGrid grid(table);
   PlanResult result;

@@ -39,14 +39,17 @@ Eigen::MatrixXd convolveColumns(const Eigen::MatrixXd& samples, const std::vecto
 HeightGrid gaussianSmoothed(const HeightGrid& grid, double sigma) {
   requireNonNegative(sigma, "height map smoothing sigma [samples]");
   if (sigma == 0.0) return grid;
-  const auto radius = static_cast<Eigen::Index>(std::ceil(kTruncation * sigma));
-  if (radius >= grid.heights.rows() || radius >= grid.heights.cols()) {
+  // Compared as a double: a huge sigma's reach does not fit an Eigen::Index.
+  const double reach = std::ceil(kTruncation * sigma);
+  if (reach >= static_cast<double>(grid.heights.rows()) ||
+      reach >= static_cast<double>(grid.heights.cols())) {
     std::ostringstream message;
-    message << grid.source << ": smoothing sigma " << sigma << " samples reaches " << radius
+    message << grid.source << ": smoothing sigma " << sigma << " samples reaches " << reach
             << " samples, which must be less than the map's " << grid.heights.rows() << " x "
             << grid.heights.cols() << " samples";
     throw std::invalid_argument(message.str());
   }
+  const auto radius = static_cast<Eigen::Index>(reach);
   std::vector<double> kernel(static_cast<std::size_t>(2 * radius + 1));
   double total = 0.0;
   for (Eigen::Index k = -radius; k <= radius; ++k) {

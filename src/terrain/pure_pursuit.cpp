@@ -53,7 +53,9 @@ DriveRates PurePursuitController::command(const TrackingError& error,
   const double normalised = error.norm / (gains_.k_e + error.norm);
   const double feed_forward = desired_velocity.norm() / radius_;
   const auto [sin_zeta, cos_zeta] = sinCos(error.zeta);
-  const auto lateral = [&](double k_phi1, double k_phi2) {
+  // Copied in, not captured by reference: a lambda may capture a structured binding only from
+  // C++20 on (GCC accepts it in C++17, clang 14, which builds the fuzz targets, does not).
+  const auto lateral = [&, sin_zeta = sin_zeta](double k_phi1, double k_phi2) {
     return -(k_phi1 * normalised + k_phi2) * sin_zeta;
   };
   DriveRates rates;

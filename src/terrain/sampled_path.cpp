@@ -156,7 +156,23 @@ SampledPath SampledPath::atSpeed(const std::vector<Eigen::Vector2d>& points, dou
   for (std::size_t i = 0; i < points.size(); ++i) {
     requireFinitePosition(i, points[i]);
     if (!kept.empty() && points[i] == kept.back()) continue;
-    times.push_back(kept.empty() ? 0.0 : times.back() + (points[i] - kept.back()).norm() / speed);
+    if (kept.empty()) {
+      times.push_back(0.0);
+    } else {
+      // A step too short for the time so far (after a huge one), or a time beyond a double's
+      // range, would give the spline equal or infinite times.
+      const double step = (points[i] - kept.back()).norm() / speed;
+      const double time = times.back() + step;
+      if (!(time > times.back()) || !std::isfinite(time)) {
+        std::ostringstream problem;
+        problem.precision(kMessagePrecision);
+        problem << "its time along the path, " << times.back() << " s + " << step << " s (at "
+                << speed << " m/s), is not a finite time after the point before's in double "
+                << "precision: a coordinate of this point or an earlier one is far off";
+        rejectPoint(i, problem.str());
+      }
+      times.push_back(time);
+    }
     kept.push_back(points[i]);
   }
   requireTwoPoints(kept.size(), "distinct ");

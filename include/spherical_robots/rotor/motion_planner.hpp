@@ -48,6 +48,11 @@ struct PlanResult {
   std::string reason;                ///< why there is none (empty when there are solutions)
 };
 
+/// The checks planRotorMotion makes before it plans, alone: a request is cheap to check and a
+/// plan costs milliseconds (test/fuzz/fuzz_plan_request.cpp fuzzes these).
+/// @throw std::invalid_argument as planRotorMotion, naming the field, its value and the bound.
+void requireValid(const PlanRequest& request);
+
 /// Solves eqs 32-33 on a grid of leaf integrations, refines every root by Newton's method on
 /// integrated leaves, aims each with γ and verifies it by integrating all n steps. Circles
 /// smaller than 0.01 R are not plans (they approach the null manoeuvre a = b = 0).

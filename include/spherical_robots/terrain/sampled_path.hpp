@@ -60,7 +60,9 @@ class SampledPath final : public ReferencePath {
   /// Through untimed `points` at `speed` [m/s] > 0: each point's time is the length of the
   /// polyline up to it over speed. A point equal to the one before is skipped (planners repeat
   /// their goal). @throw InvalidPathPoint for a coordinate that is not finite;
-  /// std::invalid_argument for a bad speed or fewer than 2 distinct points.
+  /// std::invalid_argument for a bad speed or fewer than 2 distinct points; InvalidPathPoint for
+  /// a point whose time along the path a double cannot tell from the one before's (a coordinate
+  /// far off) or is not finite.
   static SampledPath atSpeed(const std::vector<Eigen::Vector2d>& points, double speed);
 
   /// A path as nav_msgs/Path carries it: strictly increasing stamps are a timed path, times
