@@ -17,7 +17,7 @@ signal kills it, and resumes from its checkpoint; an exit with an error status s
 
 Exit status: 0 the plant ended the stack (it exits 0 at its `duration`); 1 a required node died
 (a node of the loop with respawn:=false, or the plant failed); 2 the launch failed (bad arguments,
-a missing file); 130 interrupted (Ctrl-C) before the stack ended.
+a missing file, a node that could not be started); 130 interrupted (Ctrl-C) before the stack ended.
 """
 import argparse
 import os
@@ -100,6 +100,7 @@ class SupervisedLaunch(roslaunch.parent.ROSLaunchParent):
     def __init__(self, run_id, files, deaths, **kwargs):
         super().__init__(run_id, files, **kwargs)
         self.deaths = deaths
+        self.failed_to_start = []
         self.required = []
         self.restarted = []
 
@@ -118,6 +119,18 @@ class SupervisedLaunch(roslaunch.parent.ROSLaunchParent):
     def _start_pm(self):
         super()._start_pm()
         self.pm.add_process_listener(self.deaths)
+
+    def _init_runner(self):
+        # roslaunch logs a node it cannot start (an executable that is not there) and goes on:
+        # that node never dies, so the stack would wait for it for ever. Count them here.
+        super()._init_runner()
+        launch = self.runner.launch
+
+        def launch_and_count():
+            succeeded, failed = launch()
+            self.failed_to_start = failed
+            return succeeded, failed
+        self.runner.launch = launch_and_count
 
 
 def launch_file(name):
@@ -155,6 +168,11 @@ def main(argv):
         parent.start()
     except (roslaunch.core.RLException, ValueError, rospkg.ResourceNotFound) as error:
         roslaunch.core.printerrlog(str(error))
+        parent.shutdown()
+        return 2
+    if parent.failed_to_start:
+        roslaunch.core.printerrlog('run_stack.py: the launch failed: %d node(s) could not be '
+                                   'started (above)' % len(parent.failed_to_start))
         parent.shutdown()
         return 2
     nodelets = any(node.rsplit('/', 1)[-1] == 'nodelet_manager' for node in parent.required)

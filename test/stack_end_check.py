@@ -1,12 +1,19 @@
 #!/usr/bin/env python3
 """scripts/run_stack.py's StackEnd, with deaths and times as plain numbers (test/stack_end.test):
 which deaths end a stack, and whether normally (status 0) or as a failure (status 1). The cases
-are the launch files' roles (docs/conventions.md, "When a node dies")."""
+are the launch files' roles (docs/conventions.md, "When a node dies"). And one launch run through
+run_stack.py on a master of its own: a node that cannot be started is a failed launch (status 2),
+not a wait for ever."""
 import importlib.util
 import os
+import subprocess
+import sys
+import tempfile
 import unittest
 
 import rosunit
+
+from spherical_robots_testing import free_port
 
 SOURCE = os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
 
@@ -101,5 +108,23 @@ class StackEndTest(unittest.TestCase):
         self.assertEqual(end.decide(20.0), 0)
 
 
+class RunStackTest(unittest.TestCase):
+
+    def test_a_node_that_cannot_be_started_fails_the_launch(self):
+        # Seen when a stack was launched while its package was being rebuilt: roslaunch logged
+        # "cannot launch node" and run_stack.py waited for its death for ever.
+        with tempfile.TemporaryDirectory() as home:
+            launch = os.path.join(home, 'missing.launch')
+            with open(launch, 'w') as f:
+                f.write('<launch><node pkg="spherical_robots" type="no_such_node" '
+                        'name="plant" required="true"/></launch>')
+            result = subprocess.run(
+                [sys.executable, os.path.join(SOURCE, 'scripts', 'run_stack.py'), '--port',
+                 str(free_port()), launch], env=dict(os.environ, ROS_HOME=home),
+                capture_output=True, text=True, timeout=60)
+        self.assertEqual(result.returncode, 2, result.stdout + result.stderr)
+        self.assertIn('could not be started', result.stderr)
+
+
 if __name__ == '__main__':
-    rosunit.unitrun('spherical_robots', 'stack_end', StackEndTest)
+    rosunit.unitrun('spherical_robots', 'stack_end', '__main__')  # both test cases
