@@ -18,11 +18,11 @@ std::string joined(const std::string& parent, const std::string& child) {
   return parent.empty() ? child : parent + "/" + child;
 }
 
-/// yaml-cpp keeps a key given twice in a dictionary and reads the first: a later value, which the
-/// author meant, would be silently ignored. A key must be a name, not a list or a dictionary.
-void refuseRepeatedKeys(const YAML::Node& node, const std::string& key, const std::string& path) {
+/// Every key a name, once per dictionary: yaml-cpp keeps a key given twice and reads the first, so
+/// a later value, which the author meant, would be silently ignored.
+void checkKeys(const YAML::Node& node, const std::string& key, const std::string& path) {
   if (node.IsSequence()) {
-    for (const YAML::Node& item : node) refuseRepeatedKeys(item, key, path);
+    for (const YAML::Node& item : node) checkKeys(item, key, path);
     return;
   }
   if (!node.IsMap()) return;
@@ -39,7 +39,7 @@ void refuseRepeatedKeys(const YAML::Node& node, const std::string& key, const st
       throw std::invalid_argument(path + lineOf(entry.first) + ": parameter '" + joined(key, name) +
                                   "' is given twice");
     }
-    refuseRepeatedKeys(entry.second, joined(key, name), path);
+    checkKeys(entry.second, joined(key, name), path);
   }
 }
 
@@ -59,7 +59,7 @@ YamlParameterSource::YamlParameterSource(const std::string& path, Warn warn)
                                 ": the top level must be a dictionary of parameters, got '" +
                                 YAML::Dump(root_) + "'");
   }
-  refuseRepeatedKeys(root_, "", path);
+  checkKeys(root_, "", path);
 }
 
 std::vector<YamlParameterSource::Key> YamlParameterSource::unreadKeys(
