@@ -1,5 +1,7 @@
 #include "spherical_robots/core/plant_checkpoint.hpp"
 
+#include <boost/crc.hpp>
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -110,8 +112,11 @@ std::string keyMismatch(const CheckpointKey& stored, const CheckpointKey& curren
 }
 
 std::string fingerprintOf(const std::string& description) {
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016zx", std::hash<std::string>{}(description));
+  // CRC-32 (Boost.CRC): defined bit for bit, unlike std::hash, whose value is the library's.
+  boost::crc_32_type crc;
+  crc.process_bytes(description.data(), description.size());
+  char hex[9];
+  std::snprintf(hex, sizeof hex, "%08x", static_cast<unsigned>(crc.checksum()));
   return hex;
 }
 
