@@ -57,8 +57,12 @@ std::string LockstepPace::stepOnce() {
   return "";
 }
 
+void LockstepPace::finished(double wall) {
+  if (!finished_wall_) finished_wall_ = wall;
+}
+
 double LockstepPace::realTimeFactor(std::int64_t latest_step, double wall) const {
-  const double elapsed_wall = wall - first_wall_;
+  const double elapsed_wall = finished_wall_.value_or(wall) - first_wall_;
   if (!first_step_ || !(elapsed_wall > 0.0)) return std::numeric_limits<double>::quiet_NaN();
   return 1e-9 * static_cast<double>(latest_step - *first_step_) / elapsed_wall;
 }

@@ -217,6 +217,7 @@ bool LockstepClock::stepOnce(std_srvs::Trigger::Request&, std_srvs::Trigger::Res
 
 void LockstepClock::finish() {
   finished_ = true;
+  pace_.finished(ros::WallTime::now().toSec());
   constexpr double kDrainTime = 1.0;  // [s] of wall time for observers to take the last messages
   finish_timer_ = ros::NodeHandle().createWallTimer(
       ros::WallDuration(kDrainTime), [](const ros::WallTimerEvent&) { ros::shutdown(); }, true);

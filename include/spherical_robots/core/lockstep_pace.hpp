@@ -32,7 +32,12 @@ class LockstepPace {
   std::string stepOnce();
   bool paused() const { return paused_; }
 
-  /// Simulated over wall time since the first step; NaN before it.
+  /// The last step has been taken, at wall time `wall` [s]: the real-time factor keeps its value
+  /// from then on (a run's figure, not diluted by the wall time that passes after its end).
+  void finished(double wall);
+
+  /// Simulated over wall time since the first step (up to `wall`, or to the end once finished);
+  /// NaN before the first step.
   double realTimeFactor(std::int64_t latest_step, double wall) const;
 
  private:
@@ -42,6 +47,7 @@ class LockstepPace {
   int single_steps_ = 0;
   std::optional<std::int64_t> first_step_;
   double first_wall_ = 0.0;
+  std::optional<double> finished_wall_;
 };
 
 }  // namespace spherical_robots
