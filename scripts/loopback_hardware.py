@@ -127,8 +127,8 @@ class LoopbackHardware:
                                              for name in participants]
         if self.lockstep:
             self.command_topic = rospy.resolve_name('actuators/command')
-            self.received = {}     # topic -> latest stamp received [ns]
-            self.expected = {}     # topic -> stamp the pending request waits for [ns]
+            self.received = {}     # (topic, publisher's caller id) -> latest stamp received [ns]
+            self.expected = {}     # topic -> (stamp [ns], publisher or '') the pending request waits for
             self.pending = None    # the stamp of the request not yet worked
             self.step_time = None  # [s] the latest step worked at
             self.last_request_wall = None
@@ -161,17 +161,25 @@ class LoopbackHardware:
             return
         with self.lock:
             self.last_request_wall = time.time()
-            self.expected = {topic: stamp.to_nsec() for topic, stamp
-                             in zip(request.inputs, request.input_stamps)
+            publishers = (request.input_publishers
+                          if len(request.input_publishers) == len(request.inputs)
+                          else [''] * len(request.inputs))
+            self.expected = {topic: (stamp.to_nsec(), publisher) for topic, stamp, publisher
+                             in zip(request.inputs, request.input_stamps, publishers)
                              if topic == self.command_topic}
             self.pending = request.stamp
             self.work_if_ready()
         self.updater.update()
 
+    def arrived(self, topic, stamp, publisher):
+        """A message on topic at least stamp [ns] recent came from publisher (any if '')."""
+        return any(latest >= stamp for (received_topic, sender), latest in self.received.items()
+                   if received_topic == topic and publisher in ('', sender))
+
     def work_if_ready(self):
         """With the lock held: the pending step's work once its inputs are in."""
-        if self.pending is None or any(self.received.get(topic, -1) < stamp
-                                       for topic, stamp in self.expected.items()):
+        if self.pending is None or not all(self.arrived(topic, stamp, publisher)
+                                           for topic, (stamp, publisher) in self.expected.items()):
             return
         stamp, self.pending = self.pending, None
         self.step_time = stamp.to_sec()
@@ -259,8 +267,10 @@ class LoopbackHardware:
         with self.lock:
             self.take_command(msg)
             if self.lockstep:
-                stamp = msg.header.stamp.to_nsec()
-                self.received[self.command_topic] = max(stamp, self.received.get(self.command_topic, -1))
+                # Only the named publisher's messages count (docs/lockstep.md): a stray one
+                # stamped ahead would otherwise satisfy every wait until its stamp.
+                key = (self.command_topic, msg._connection_header['callerid'])
+                self.received[key] = max(msg.header.stamp.to_nsec(), self.received.get(key, -1))
                 self.work_if_ready()
 
     def take_command(self, msg):

@@ -29,6 +29,12 @@ bool lists(const StepRequest& request, const std::string& topic, std::int64_t st
   return false;
 }
 
+const std::string* publisherOf(const StepRequest& request, const std::string& topic) {
+  for (const PublishedTopic& input : request.inputs)
+    if (input.topic == topic) return &input.publisher;
+  return nullptr;
+}
+
 TEST(LockstepSequencer, AsksEachParticipantInOrderWithWhatWasPublishedSinceItLastWorked) {
   LockstepSequencer sequencer = terrainLoop();
   ASSERT_TRUE(sequencer.allExpectedJoined());
@@ -50,10 +56,19 @@ TEST(LockstepSequencer, AsksEachParticipantInOrderWithWhatWasPublishedSinceItLas
   EXPECT_EQ(sequencer.acknowledge(kHardware, kHardware, kStep, {"/sphere/actuators/state"}, 0),
             AckOutcome::kAccepted);
 
+  // Each input names its publisher: the owner for its own topics, the acknowledging sender for a
+  // participant's.
+  ASSERT_TRUE(publisherOf(*hardware, "/sphere/terrain_state"));
+  EXPECT_EQ(*publisherOf(*hardware, "/sphere/terrain_state"), kPlant);
+  ASSERT_TRUE(publisherOf(*hardware, "/sphere/actuators/command"));
+  EXPECT_EQ(*publisherOf(*hardware, "/sphere/actuators/command"), kController);
+
   const auto plant = sequencer.nextRequest(0.0);
   ASSERT_TRUE(plant);
   EXPECT_EQ(plant->participant, kPlant) << "the plant's own request ends the step";
   EXPECT_TRUE(lists(*plant, "/sphere/actuators/state", kStep));
+  ASSERT_TRUE(publisherOf(*plant, "/sphere/actuators/state"));
+  EXPECT_EQ(*publisherOf(*plant, "/sphere/actuators/state"), kHardware);
   EXPECT_FALSE(sequencer.nextRequest(0.0));
   sequencer.endStep();
 
@@ -164,19 +179,44 @@ TEST(LockstepSequencer, RejectsABadTimeoutARepeatedNameAndAStepThatDoesNotAdvanc
 }
 
 TEST(LockstepInputs, WaitsForListedSubscriptionsWhicheverArrivesFirst) {
-  LockstepInputs inputs({"/sphere/actuators/command"});
+  const std::string command = "/sphere/actuators/command";
+  LockstepInputs inputs({command});
   // The data before the request.
-  inputs.received("/sphere/actuators/command", kStep);
-  inputs.expect({{"/sphere/actuators/command", kStep}, {"/sphere/terrain_state", kStep}});
+  inputs.received(command, kStep, kController);
+  inputs.expect({{command, kStep, kController}, {"/sphere/terrain_state", kStep, kPlant}});
   EXPECT_TRUE(inputs.satisfied()) << "terrain_state is not one of its subscriptions";
   // The request before the data.
-  inputs.expect({{"/sphere/actuators/command", 2 * kStep}});
+  inputs.expect({{command, 2 * kStep, kController}});
   EXPECT_FALSE(inputs.satisfied());
   ASSERT_EQ(inputs.missing().size(), 1u);
-  inputs.received("/sphere/actuators/command", kStep);  // an old one again: not enough
+  inputs.received(command, kStep, kController);  // an old one again: not enough
   EXPECT_FALSE(inputs.satisfied());
-  inputs.received("/sphere/actuators/command", 2 * kStep);
+  inputs.received(command, 2 * kStep, kController);
   EXPECT_TRUE(inputs.satisfied());
+}
+
+// A stray node's message on an input counts for nothing: one stamped with the step's time does
+// not stand in for the loop's (which the node would then work without), and one stamped 1,000 s
+// ahead does not satisfy every wait until then. Its publisher's rejected messages still count
+// (docs/lockstep.md), so a bad command from the controller does not stall the step.
+TEST(LockstepInputs, CountsOnlyTheNamedPublishersMessages) {
+  const std::string odom = "/sphere/odom";
+  const std::string stray = "/hostile_input_check";
+  LockstepInputs inputs({odom});
+  inputs.received(odom, 1000 * kStep + 1000'000'000'000, stray);
+  inputs.received(odom, 2 * kStep, stray);
+  inputs.expect({{odom, 2 * kStep, kPlant}});
+  EXPECT_FALSE(inputs.satisfied()) << "the stray node's messages stand in for the plant's";
+  ASSERT_EQ(inputs.missing(), std::vector<std::string>{odom});
+  inputs.received(odom, 2 * kStep, kPlant);
+  EXPECT_TRUE(inputs.satisfied());
+  inputs.expect({{odom, 3 * kStep, kPlant}});
+  EXPECT_FALSE(inputs.satisfied()) << "the message from the future satisfied a later wait";
+  inputs.received(odom, 3 * kStep, kPlant);
+  EXPECT_TRUE(inputs.satisfied());
+  // A request that names no publisher (from a plant older than the field) takes any.
+  inputs.expect({{odom, 4 * kStep, ""}});
+  EXPECT_TRUE(inputs.satisfied()) << "the stray message from the future counts where any does";
 }
 
 }  // namespace

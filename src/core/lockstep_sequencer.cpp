@@ -64,15 +64,17 @@ bool LockstepSequencer::allExpectedJoined() const {
 std::size_t LockstepSequencer::topicIndex(const std::string& topic) {
   for (std::size_t i = 0; i < topics_.size(); ++i)
     if (topics_[i].topic == topic) return i;
-  topics_.push_back({topic, 0});
+  topics_.push_back({topic, 0, {}});
   publications_.push_back(0);
   return topics_.size() - 1;
 }
 
-void LockstepSequencer::record(const std::vector<std::string>& published) {
+void LockstepSequencer::record(const std::vector<std::string>& published,
+                               const std::string& publisher) {
   for (const std::string& topic : published) {
     const std::size_t i = topicIndex(topic);
     topics_[i].stamp = stamp_;
+    topics_[i].publisher = publisher;
     ++publications_[i];
   }
 }
@@ -91,7 +93,7 @@ void LockstepSequencer::beginStep(std::int64_t stamp, const std::vector<std::str
   cursor_ = 0;
   awaited_.reset();
   awaited_since_ = wall;
-  record(published);
+  record(published, owner_.name);
 }
 
 StepRequest LockstepSequencer::requestFor(ParticipantRecord& participant) {
@@ -137,7 +139,7 @@ AckOutcome LockstepSequencer::acknowledge(const std::string& sender, const std::
   ParticipantRecord& record_of = participants_[*awaited_];
   ++record_of.acknowledged;
   record_of.next = next;
-  record(published);
+  record(published, sender);
   // What it published itself is nothing new to it.
   record_of.seen.resize(publications_.size(), 0);
   for (const std::string& topic : published) record_of.seen[topicIndex(topic)] = publications_[topicIndex(topic)];

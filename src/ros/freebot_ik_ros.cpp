@@ -55,8 +55,8 @@ FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
                                  << state_input_.topic());
 }
 
-void FreebotIkRos::onState(const spherical_robots::FreebotState& msg) {
-  work_.arrived(msg, state_sub_.getTopic());
+void FreebotIkRos::onState(const ros::MessageEvent<spherical_robots::FreebotState const>& event) {
+  work_.arrived(event, state_sub_.getTopic());
 }
 
 void FreebotIkRos::drive(const spherical_robots::FreebotState& msg) {

@@ -37,8 +37,8 @@ FrictionDriveControllerRos::FrictionDriveControllerRos(ros::NodeHandle nh, ros::
                                              << command_pub_.topic() << " (roller motors)");
 }
 
-void FrictionDriveControllerRos::onDriveCommand(const sensor_msgs::JointState& msg) {
-  work_.arrived(msg, command_sub_.getTopic());
+void FrictionDriveControllerRos::onDriveCommand(const ros::MessageEvent<sensor_msgs::JointState const>& event) {
+  work_.arrived(event, command_sub_.getTopic());
 }
 
 void FrictionDriveControllerRos::convert(const sensor_msgs::JointState& msg) {

@@ -41,8 +41,8 @@ FrictionDriveSimRos::FrictionDriveSimRos(ros::NodeHandle nh, ros::NodeHandle pnh
                                              << drive_state_pub_.topic() << " (2R rates)");
 }
 
-void FrictionDriveSimRos::onActuatorState(const sensor_msgs::JointState& msg) {
-  work_.arrived(msg, state_sub_.getTopic());
+void FrictionDriveSimRos::onActuatorState(const ros::MessageEvent<sensor_msgs::JointState const>& event) {
+  work_.arrived(event, state_sub_.getTopic());
 }
 
 void FrictionDriveSimRos::drive(const sensor_msgs::JointState& msg) {

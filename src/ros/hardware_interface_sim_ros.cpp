@@ -106,7 +106,9 @@ HardwareInterfaceSimRos::HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHa
   }
 }
 
-void HardwareInterfaceSimRos::commandCallback(const sensor_msgs::JointState::ConstPtr& msg) {
+void HardwareInterfaceSimRos::commandCallback(
+    const ros::MessageEvent<sensor_msgs::JointState const>& event) {
+  const sensor_msgs::JointState::ConstPtr msg = event.getConstMessage();
   // The watchdog counts from arrival, not from header.stamp: many publishers leave it zero. In
   // lock-step a command stamped within the step it arrives in counts from its stamp, whatever
   // the order the transport delivered it in (the controller's are stamped with their step).
@@ -125,7 +127,7 @@ void HardwareInterfaceSimRos::commandCallback(const sensor_msgs::JointState::Con
   } else {
     command_input_.reject(reason);  // the actuators keep the last good set-points
   }
-  if (lockstep_) lockstep_->received(command_sub_.getTopic(), stamp);
+  if (lockstep_) lockstep_->received(command_sub_.getTopic(), stamp, event.getPublisherName());
 }
 
 void HardwareInterfaceSimRos::eStopCallback(const std_msgs::Bool::ConstPtr& msg) {

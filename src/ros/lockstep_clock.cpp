@@ -169,14 +169,16 @@ void LockstepClock::pump() {
     for (const PublishedTopic& input : request->inputs) {
       step.inputs.push_back(input.topic);
       step.input_stamps.push_back(timeOf(input.stamp));
+      step.input_publishers.push_back(input.publisher);
     }
     request_pub_.publish(step);
     return;
   }
 }
 
-void LockstepClock::received(const std::string& topic, const ros::Time& stamp) {
-  inputs_.received(topic, nanosecondsOf(stamp));
+void LockstepClock::received(const std::string& topic, const ros::Time& stamp,
+                             const std::string& publisher) {
+  inputs_.received(topic, nanosecondsOf(stamp), publisher);
   if (awaiting_inputs_) finishIfInputsIn();
 }
 

@@ -79,8 +79,9 @@ void LockstepParticipant::sendJoin(const ros::WallTimerEvent&) {
   ack_pub_.publish(join);
 }
 
-void LockstepParticipant::received(const std::string& topic, const ros::Time& stamp) {
-  inputs_.received(topic, nanosecondsOf(stamp));
+void LockstepParticipant::received(const std::string& topic, const ros::Time& stamp,
+                                   const std::string& publisher) {
+  inputs_.received(topic, nanosecondsOf(stamp), publisher);
   if (pending_) workIfReady();
 }
 
@@ -88,8 +89,10 @@ void LockstepParticipant::onRequest(const spherical_robots::LockstepStep& reques
   if (request.participant != name_) return;
   last_request_wall_ = ros::WallTime::now();
   std::vector<PublishedTopic> inputs;
+  const bool publishers_named = request.input_publishers.size() == request.inputs.size();
   for (std::size_t i = 0; i < request.inputs.size() && i < request.input_stamps.size(); ++i)
-    inputs.push_back({request.inputs[i], nanosecondsOf(request.input_stamps[i])});
+    inputs.push_back({request.inputs[i], nanosecondsOf(request.input_stamps[i]),
+                      publishers_named ? request.input_publishers[i] : std::string()});
   if (pending_)
     ROS_WARN_STREAM("lock-step: a request for " << request.stamp << " s replaces the one for "
                                                 << *pending_ << " s, whose inputs never came");

@@ -174,7 +174,8 @@ void NormaControllerRos::onReconfigure(GainsConfig& config, std::uint32_t /*leve
   }
 }
 
-void NormaControllerRos::onActuatorState(const sensor_msgs::JointState& msg) {
+void NormaControllerRos::onActuatorState(const ros::MessageEvent<sensor_msgs::JointState const>& event) {
+  const sensor_msgs::JointState& msg = *event.getConstMessage();
   try {
     const norma::EffortLimits& limits = loop_.limits();
     const std::vector<double> efforts = conversions::effortsByName(
@@ -184,16 +185,17 @@ void NormaControllerRos::onActuatorState(const sensor_msgs::JointState& msg) {
   } catch (const std::invalid_argument& e) {
     actuator_input_.reject(e.what());
   }
-  if (work_.participant()) work_.participant()->received(actuator_sub_.getTopic(), msg.header.stamp);
+  if (work_.participant()) work_.participant()->received(actuator_sub_.getTopic(), msg.header.stamp, event.getPublisherName());
 }
 
 ros::Time NormaControllerRos::now() const { return workingTime(work_.participant()); }
 
-void NormaControllerRos::onJointStates(const sensor_msgs::JointState& msg) {
-  work_.arrived(msg, joint_sub_.getTopic());
+void NormaControllerRos::onJointStates(const ros::MessageEvent<sensor_msgs::JointState const>& event) {
+  work_.arrived(event, joint_sub_.getTopic());
 }
 
-void NormaControllerRos::onOdometry(const nav_msgs::Odometry& msg) {
+void NormaControllerRos::onOdometry(const ros::MessageEvent<nav_msgs::Odometry const>& event) {
+  const nav_msgs::Odometry& msg = *event.getConstMessage();
   try {
     const std::string stamp_problem = stampProblem(msg.header.stamp, now(), parameters_.max_stamp_skew);
     if (!stamp_problem.empty()) throw std::invalid_argument("odom " + stamp_problem);
@@ -205,7 +207,7 @@ void NormaControllerRos::onOdometry(const nav_msgs::Odometry& msg) {
   } catch (const std::invalid_argument& e) {
     odom_input_.reject(e.what());  // the last good pose stays
   }
-  if (work_.participant()) work_.participant()->received(odom_sub_.getTopic(), msg.header.stamp);
+  if (work_.participant()) work_.participant()->received(odom_sub_.getTopic(), msg.header.stamp, event.getPublisherName());
 }
 
 void NormaControllerRos::control(const sensor_msgs::JointState& msg) {

@@ -134,7 +134,8 @@ void PlantLoop::writeCheckpoint(const ros::Time& now) {
   }
 }
 
-void PlantLoop::onActuatorState(const sensor_msgs::JointState& msg) {
+void PlantLoop::onActuatorState(const ros::MessageEvent<sensor_msgs::JointState const>& event) {
+  const sensor_msgs::JointState& msg = *event.getConstMessage();
   // In a nodelet manager a message may come while start() is still making the clock.
   if (!clock_) return;
   try {
@@ -143,7 +144,7 @@ void PlantLoop::onActuatorState(const sensor_msgs::JointState& msg) {
   } catch (const std::invalid_argument& e) {
     actuator_input_.reject(e.what());
   }
-  clock_->received(actuator_sub_.getTopic(), msg.header.stamp);
+  clock_->received(actuator_sub_.getTopic(), msg.header.stamp, event.getPublisherName());
 }
 
 std::vector<std::string> PlantLoop::tick(const ros::Time& now) {

@@ -183,7 +183,8 @@ PurePursuitControllerRos::PurePursuitControllerRos(ros::NodeHandle nh, ros::Node
 
 ros::Time PurePursuitControllerRos::now() const { return workingTime(lockstep_.get()); }
 
-void PurePursuitControllerRos::onOdometry(const nav_msgs::Odometry& msg) {
+void PurePursuitControllerRos::onOdometry(const ros::MessageEvent<nav_msgs::Odometry const>& event) {
+  const nav_msgs::Odometry& msg = *event.getConstMessage();
   const bool primary = parameters_.mode == Mode::Tracking;
   try {
     // Everything checked before anything changes: a rejected state leaves the last good one.
@@ -200,10 +201,11 @@ void PurePursuitControllerRos::onOdometry(const nav_msgs::Odometry& msg) {
     if (primary) input_.reject(e.what());
     ROS_WARN_STREAM_THROTTLE(1.0, "Ignoring odom: " << e.what());
   }
-  if (lockstep_) lockstep_->received(odom_sub_.getTopic(), msg.header.stamp);
+  if (lockstep_) lockstep_->received(odom_sub_.getTopic(), msg.header.stamp, event.getPublisherName());
 }
 
-void PurePursuitControllerRos::onJointStates(const sensor_msgs::JointState& msg) {
+void PurePursuitControllerRos::onJointStates(const ros::MessageEvent<sensor_msgs::JointState const>& event) {
+  const sensor_msgs::JointState& msg = *event.getConstMessage();
   try {
     acceptStamp(msg.header.stamp, "joint_states");
     tilt_ = conversions::tiltFromJointState(msg);
@@ -211,7 +213,7 @@ void PurePursuitControllerRos::onJointStates(const sensor_msgs::JointState& msg)
   } catch (const std::invalid_argument& e) {
     tilt_input_.reject(e.what());
   }
-  if (lockstep_) lockstep_->received(joint_sub_.getTopic(), msg.header.stamp);
+  if (lockstep_) lockstep_->received(joint_sub_.getTopic(), msg.header.stamp, event.getPublisherName());
 }
 
 void PurePursuitControllerRos::acceptStamp(const ros::Time& stamp, const std::string& topic) const {

@@ -282,7 +282,8 @@ void RotorPlannerRos::command(const ros::Time& now) {
   if (!executive_.busy()) command_timer_.stop();
 }
 
-void RotorPlannerRos::onOdometry(const nav_msgs::Odometry& msg) {
+void RotorPlannerRos::onOdometry(const ros::MessageEvent<nav_msgs::Odometry const>& event) {
+  const nav_msgs::Odometry& msg = *event.getConstMessage();
   const geometry_msgs::Point& centre = msg.pose.pose.position;
   try {
     const std::string stamp_problem = stampProblem(msg.header.stamp, workingTime(lockstep_.get()),
@@ -298,7 +299,7 @@ void RotorPlannerRos::onOdometry(const nav_msgs::Odometry& msg) {
   } catch (const std::invalid_argument& error) {
     odom_input_.reject(error.what());  // logged; the last good rest stays
   }
-  if (lockstep_) lockstep_->received(odom_sub_.getTopic(), msg.header.stamp);
+  if (lockstep_) lockstep_->received(odom_sub_.getTopic(), msg.header.stamp, event.getPublisherName());
 }
 
 }  // namespace spherical_robots

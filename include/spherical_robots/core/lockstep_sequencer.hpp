@@ -15,10 +15,14 @@
 
 namespace spherical_robots {
 
-/// A topic published during the loop and the stamp of its latest message [ns].
+/// A topic published during the loop, the stamp of its latest message [ns] and the caller id of
+/// the node that published it: only that node's messages count as that input, so a stray or
+/// hostile message on the topic (one stamped 1,000 s ahead, say) can neither stand in for it
+/// nor satisfy every later wait. An empty publisher: any.
 struct PublishedTopic {
   std::string topic;
   std::int64_t stamp = 0;
+  std::string publisher;
 };
 
 /// What the sequencer asks of one participant: work at step time `stamp` [ns], after receiving
@@ -94,14 +98,14 @@ class LockstepSequencer {
 
  private:
   std::size_t topicIndex(const std::string& topic);
-  void record(const std::vector<std::string>& published);
+  void record(const std::vector<std::string>& published, const std::string& publisher);
   StepRequest requestFor(ParticipantRecord& participant);
 
   ParticipantRecord owner_;
   std::vector<ParticipantRecord> participants_;
   std::size_t expected_count_;
   double timeout_;
-  std::vector<PublishedTopic> topics_;        ///< every topic published so far, latest stamp
+  std::vector<PublishedTopic> topics_;  ///< every topic published so far: latest stamp, publisher
   std::vector<std::uint64_t> publications_;   ///< per topic: how many times it was published
   bool in_step_ = false;
   bool owner_asked_ = false;

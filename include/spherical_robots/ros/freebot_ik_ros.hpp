@@ -43,7 +43,7 @@ class FreebotIkRos {
   FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh);
 
  private:
-  void onState(const spherical_robots::FreebotState& msg);
+  void onState(const ros::MessageEvent<spherical_robots::FreebotState const>& event);
   /// One executive step from one state (nothing for a rejected state): the goals' ends and
   /// starts, set-points, feedback and verdicts.
   void drive(const spherical_robots::FreebotState& msg);

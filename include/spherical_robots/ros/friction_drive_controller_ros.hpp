@@ -42,7 +42,7 @@ class FrictionDriveControllerRos {
   FrictionDriveControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh);
 
  private:
-  void onDriveCommand(const sensor_msgs::JointState& msg);
+  void onDriveCommand(const ros::MessageEvent<sensor_msgs::JointState const>& event);
   void convert(const sensor_msgs::JointState& msg);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 

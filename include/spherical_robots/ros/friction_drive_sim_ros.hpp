@@ -42,7 +42,7 @@ class FrictionDriveSimRos {
   FrictionDriveSimRos(ros::NodeHandle nh, ros::NodeHandle pnh);
 
  private:
-  void onActuatorState(const sensor_msgs::JointState& msg);
+  void onActuatorState(const ros::MessageEvent<sensor_msgs::JointState const>& event);
   void drive(const sensor_msgs::JointState& msg);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 

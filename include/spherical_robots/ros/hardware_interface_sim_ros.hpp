@@ -33,7 +33,7 @@ class HardwareInterfaceSimRos {
   HardwareInterfaceSimRos(ros::NodeHandle nh, ros::NodeHandle pnh);
 
  private:
-  void commandCallback(const sensor_msgs::JointState::ConstPtr& msg);
+  void commandCallback(const ros::MessageEvent<sensor_msgs::JointState const>& event);
   void eStopCallback(const std_msgs::Bool::ConstPtr& msg);
   void timerCallback(const ros::TimerEvent& event);
   /// The actuators' update and their state at `now` (a timer's or a lock-step request's time).

@@ -54,7 +54,8 @@ class LockstepClock : public PlantClock {
   ros::Time now() const override { return now_; }
   void resumeAt(const ros::Time& t) override { now_ = t; }
   double realTimeFactor() const override;
-  void received(const std::string& topic, const ros::Time& stamp) override;
+  void received(const std::string& topic, const ros::Time& stamp,
+                const std::string& publisher) override;
   void report(diagnostic_updater::DiagnosticStatusWrapper& status) override;
   void finish() override;
 

@@ -5,6 +5,7 @@
 // request, and acknowledges on lockstep/ack once it has published (stamped with the step's time)
 // everything it publishes for the step.
 
+#include <ros/message_event.h>
 #include <ros/node_handle.h>
 #include <ros/publisher.h>
 #include <ros/subscriber.h>
@@ -58,9 +59,10 @@ class LockstepParticipant {
   /// Asks to join only while ready() also holds (e.g. a controller that has something to follow),
   /// so that time starts with the node able to work.
   void joinOnlyWhen(std::function<bool()> ready) { ready_ = std::move(ready); }
-  /// A message stamped `stamp` arrived on `topic` (call from the subscription's callback, after
-  /// the node took the message in).
-  void received(const std::string& topic, const ros::Time& stamp);
+  /// A message stamped `stamp` arrived on `topic` from `publisher` (the message event's
+  /// getPublisherName()); call from the subscription's callback, after the node took the message
+  /// in or rejected it.
+  void received(const std::string& topic, const ros::Time& stamp, const std::string& publisher);
   /// Acknowledges the step whose work returned nullopt.
   void answer(const Done& done);
   /// The time of the latest step worked at (zero before the first).
@@ -117,14 +119,15 @@ class MessageDrivenWork {
         });
   }
   /// From the input's callback.
-  void arrived(const Message& message, const std::string& topic) {
+  void arrived(const ros::MessageEvent<Message const>& event, const std::string& topic) {
+    const Message& message = *event.getConstMessage();
     if (!participant_) {
       handle_(message);
       publications_->take();
       return;
     }
     latest_ = message;
-    participant_->received(topic, message.header.stamp);
+    participant_->received(topic, message.header.stamp, event.getPublisherName());
   }
   /// Null outside lock-step (another input's callback reports its messages to it).
   LockstepParticipant* participant() const { return participant_.get(); }

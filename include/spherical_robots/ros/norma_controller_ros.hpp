@@ -56,13 +56,13 @@ class NormaControllerRos {
   NormaControllerRos(ros::NodeHandle nh, ros::NodeHandle pnh);
 
  private:
-  void onJointStates(const sensor_msgs::JointState& msg);
-  void onOdometry(const nav_msgs::Odometry& msg);
+  void onJointStates(const ros::MessageEvent<sensor_msgs::JointState const>& event);
+  void onOdometry(const ros::MessageEvent<nav_msgs::Odometry const>& event);
   /// Commands from one joint state with the latest pose (nothing for a rejected one).
   void control(const sensor_msgs::JointState& msg);
   /// ROS time, or in lock-step the time of the latest step.
   ros::Time now() const;
-  void onActuatorState(const sensor_msgs::JointState& msg);
+  void onActuatorState(const ros::MessageEvent<sensor_msgs::JointState const>& event);
   const norma::NormaController& controller() const { return loop_.controller(); }
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
   /// dynamic_reconfigure: new gains through norma::validate, as at start-up; a refused change

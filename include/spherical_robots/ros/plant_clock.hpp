@@ -35,8 +35,10 @@ class PlantClock {
   virtual ros::Time now() const = 0;
   /// ROS seconds per wall second since the first step [-]; NaN before the second.
   virtual double realTimeFactor() const = 0;
-  /// A message the plant reads arrived on `topic` (lock-step waits for those it is told of).
-  virtual void received(const std::string& /*topic*/, const ros::Time& /*stamp*/) {}
+  /// A message the plant reads arrived on `topic` from `publisher` (its caller id; lock-step waits
+  /// for those it is told of).
+  virtual void received(const std::string& /*topic*/, const ros::Time& /*stamp*/,
+                        const std::string& /*publisher*/) {}
   /// Adds the clock's figures ("clock mode", "real-time factor", lock-step participants) and may
   /// raise the status.
   virtual void report(diagnostic_updater::DiagnosticStatusWrapper& status);

@@ -103,7 +103,7 @@ class PlantLoop {
   /// Returns the time to go on from (zero: a fresh start).
   ros::Time resume();
   void writeCheckpoint(const ros::Time& now);
-  void onActuatorState(const sensor_msgs::JointState& msg);
+  void onActuatorState(const ros::MessageEvent<sensor_msgs::JointState const>& event);
   std::vector<std::string> tick(const ros::Time& now);
   void diagnose(diagnostic_updater::DiagnosticStatusWrapper& status);
 

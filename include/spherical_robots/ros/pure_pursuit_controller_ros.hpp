@@ -94,9 +94,9 @@ class PurePursuitControllerRos {
  private:
   using Mode = PurePursuitControllerParameters::Mode;
 
-  void onOdometry(const nav_msgs::Odometry& msg);
+  void onOdometry(const ros::MessageEvent<nav_msgs::Odometry const>& event);
   /// RS: its tilt.
-  void onJointStates(const sensor_msgs::JointState& msg);
+  void onJointStates(const ros::MessageEvent<sensor_msgs::JointState const>& event);
   /// @throw std::invalid_argument naming `topic` if `stamp` is unset or too far from now().
   void acceptStamp(const ros::Time& stamp, const std::string& topic) const;
   /// When an input stamped `stamp` counts as received.

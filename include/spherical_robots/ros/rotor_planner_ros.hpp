@@ -58,7 +58,7 @@ class RotorPlannerRos {
   void onCommandTimer(const ros::TimerEvent& event);
   /// Steps the executive at now and does what it says.
   void command(const ros::Time& now);
-  void onOdometry(const nav_msgs::Odometry& msg);
+  void onOdometry(const ros::MessageEvent<nav_msgs::Odometry const>& event);
 
   ros::NodeHandle nh_;
   RotorPlannerParameters params_;
