@@ -6,7 +6,8 @@ For every subscribed topic of the stack's loop it sends bursts of bad messages -
 stamps at 0, in the past and in the future -- and one stray /clock 1,000 s ahead. After each
 burst: no node of the stack has died, no message the stack published (on any topic of its
 namespace, /tf) holds a non-finite number, and the stack tracks again within `~recovery` [s] of
-simulated time (the tracking error below `~error_bound`). During a burst into the hardware
+simulated time (the tracking error below `~error_bound`; with `~batch`, below the undisturbed batch
+run's error at the same simulated time plus `~error_bound`). During a burst into the hardware
 interface its /diagnostics must leave OK (it escalates on rejections), and return to OK after it.
 
 The rotor and FreeBOT stacks have no tracking error: there the stack's goal is checked once at
@@ -15,16 +16,25 @@ the end instead (the manoeuvre ends at its target; the FreeBOT goal is ARRIVED, 
 Private parameters: ~stack (terrain | roller | norma | rotor | freebot), ~error_bound [m] (terrain,
 roller, Norma: tracking; rotor: distance of the rest to ~target), ~recovery [s] of simulated time
 (2), ~burst [s] of wall time per case (0.2, at ~500 messages per second), ~nodes (the node names
-that must survive), ~target (rotor: "u,v,psi" [m, m, rad]). Run in the stack's namespace.
+that must survive), ~target (rotor: "u,v,psi" [m, m, rad]), ~batch (Norma: the `sphere_sim norma
+--loop sampled` arguments of the stack's own undisturbed run, e.g. "--controller tracking"; its
+tracking error swings up to 0.22 m by itself, t = 98-140 s, so a fixed bound passes or fails with
+how far the test has got by then). Run in the stack's namespace.
 """
+import bisect
 import copy
+import csv
 import math
+import os
+import subprocess
 import sys
+import tempfile
 import threading
 import time
 import unittest
 
 import rosgraph
+import roslib.packages
 import rosnode
 import rospy
 import rostest
@@ -212,6 +222,37 @@ STACKS = {
 }
 
 
+BATCH_DURATION = 1200.0  # [s] simulated: the test at 1x takes 150-300 s of it, uncapped twice that
+
+
+class BatchError:
+    """|e| of the stack's undisturbed batch run (sphere_sim norma --loop sampled ARGS), by time
+    since the first step, which in lock-step is the stack's first stamp, one step after 0."""
+
+    def __init__(self, args):
+        out = os.path.join(tempfile.mkdtemp(prefix='hostile_input_batch.'), 'run.csv')
+        sim = roslib.packages.find_node('spherical_robots', 'sphere_sim')[0]
+        subprocess.run([sim, 'norma', '--loop', 'sampled'] + args.split()
+                       + ['--duration', str(BATCH_DURATION), '--log-rate', '100', '--out', out],
+                       check=True, stdout=subprocess.DEVNULL)
+        with open(out) as f:
+            rows = [(float(r['t']), float(r['err'])) for r in csv.DictReader(f)]
+        os.remove(out)
+        self.times = [t for t, _ in rows]
+        self.errors = [e for _, e in rows]
+        self.step = float(rospy.get_param('norma_plant/step'))
+
+    def at(self, stamp):
+        """The largest batch |e| within 0.02 s of stamp [s] (the log is at 100 Hz; the stamp's
+        alignment is then no matter)."""
+        t = stamp - self.step
+        if t > self.times[-1]:
+            raise AssertionError('the test ran past the batch run\'s %g s' % BATCH_DURATION)
+        lo = bisect.bisect_left(self.times, t - 0.02)
+        hi = bisect.bisect_right(self.times, t + 0.02)
+        return max(self.errors[lo:hi]) if hi > lo else self.errors[min(lo, len(self.errors) - 1)]
+
+
 class HostileInput(unittest.TestCase):
 
     @classmethod
@@ -220,6 +261,8 @@ class HostileInput(unittest.TestCase):
         cls.stack = rospy.get_param('~stack')
         cls.spec = STACKS[cls.stack]
         cls.error_bound = float(rospy.get_param('~error_bound'))
+        batch_args = rospy.get_param('~batch', '')
+        cls.batch = BatchError(batch_args) if batch_args else None
         cls.recovery = float(rospy.get_param('~recovery', 2.0))
         cls.burst = float(rospy.get_param('~burst', 0.2))
         cls.nodes = [rospy.resolve_name(n) for n in rospy.get_param('~nodes')]
@@ -336,6 +379,10 @@ class HostileInput(unittest.TestCase):
             self.assert_tracks_again(label)
         publisher.unregister()
 
+    def bound_at(self, stamp):
+        """[m] the error bound at stamp [s]: ~error_bound, over the batch run's |e| with ~batch."""
+        return self.error_bound + (self.batch.at(stamp) if self.batch else 0.0)
+
     def assert_tracks_again(self, what):
         """The tracking error is below the bound within self.recovery s of simulated time."""
         if not self.spec['tracking']:
@@ -348,14 +395,17 @@ class HostileInput(unittest.TestCase):
         wait_until(lambda: self.errors and self.errors[-1][0] >= end,
                    'a tracking error stamped %.1f s after %s' % (self.recovery, what), 60.0)
         with self.lock:
-            after = [e for t, e in self.errors if start <= t <= end]
-            below = [t for t, e in self.errors if start <= t <= end and e < self.error_bound]
+            window = [(t, e) for t, e in self.errors if start <= t <= end]
+        after = [e for _, e in window]
+        below = [t for t, e in window if e < self.bound_at(t)]
+        excess = max(e - self.bound_at(t) + self.error_bound for t, e in window)
         if below:
-            rospy.loginfo('%s: |e| below %g m %.2f s (simulated) after the burst, max |e| %.4f m',
-                          what, self.error_bound, below[0] - start, max(after))
-        self.assertTrue(any(e < self.error_bound for e in after),
-                        'after %s the stack does not track within %.1f s of simulated time: |e| '
-                        '%s (bound %g m)' % (what, self.recovery, after[-5:], self.error_bound))
+            rospy.loginfo('%s: |e| below the bound %.2f s (simulated) after the burst, max |e| '
+                          '%.4f m, largest excess over the batch run %.4f m (%s)', what,
+                          below[0] - start, max(after), excess, 'batch' if self.batch else 'none')
+        self.assertTrue(below, 'after %s the stack does not track within %.1f s of simulated time: '
+                        '|e| %s (bound %g m%s)' % (what, self.recovery, after[-5:], self.error_bound,
+                                                   ' over the batch run\'s' if self.batch else ''))
 
     def assert_nothing_died_or_went_non_finite(self, what):
         for node in self.nodes:
@@ -368,7 +418,7 @@ class HostileInput(unittest.TestCase):
     def wait_for_tracking(self):
         if not self.spec['tracking']:
             return
-        wait_until(lambda: self.errors and self.errors[-1][1] < self.error_bound,
+        wait_until(lambda: self.errors and self.errors[-1][1] < self.bound_at(self.errors[-1][0]),
                    'the stack to track within %g m' % self.error_bound, 120.0)
 
     # --- the cases ------------------------------------------------------------------------------
