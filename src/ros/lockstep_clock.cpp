@@ -130,8 +130,15 @@ void LockstepClock::schedule() {
     pace_timer_.start();
     return;
   }
-  // Queued, not called, so that the acknowledgements, messages and services queued meanwhile are
-  // served in between.
+  // From a callback that ended a step which waited for an answer, the next step starts at once:
+  // the callbacks queued meanwhile (services, messages) are served while it waits in turn. A step
+  // that waited for nothing (no participant, no input) is queued instead of called, so that steps
+  // do not recurse and the queue is still served. (Queuing every step costs a nodelet manager two
+  // thread hand-offs a step.)
+  if (!in_run_step_) {
+    runStep();
+    return;
+  }
   queue_->addCallback(queuedCall([this] { runStep(); }));
 }
 
@@ -142,6 +149,7 @@ void LockstepClock::runStep() {
 }
 
 void LockstepClock::runStepAt(const ros::Time& t) {
+  in_run_step_ = true;
   now_ = t;
   pace_.started(nanosecondsOf(now_), ros::WallTime::now().toSec());
   if (settings_.leader.empty()) {
@@ -152,6 +160,7 @@ void LockstepClock::runStepAt(const ros::Time& t) {
   const std::vector<std::string> published = tick_(now_);
   sequencer_.beginStep(nanosecondsOf(now_), published, ros::WallTime::now().toSec());
   pump();
+  in_run_step_ = false;
 }
 
 void LockstepClock::pump() {

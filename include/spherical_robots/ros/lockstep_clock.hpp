@@ -89,6 +89,7 @@ class LockstepClock : public PlantClock {
   ros::CallbackQueueInterface* queue_;
   bool started_ = false;
   bool scheduled_ = false;
+  bool in_run_step_ = false;  ///< inside runStepAt: a step that ends there is not called again from it
   bool awaiting_inputs_ = false;
   bool finished_ = false;
   ros::Time now_;
