@@ -15,7 +15,7 @@ must be empty (there are no actuator models here). A missing or
 malformed one is fatal at start-up (exit status 1, the message naming node and parameter).
 
 Listed in <ns>/lockstep/participants it takes part in lock-step time as docs/lockstep.md says,
-written from that text: it updates and publishes when asked on lockstep/step, not on a timer.
+written from that text: it updates and publishes when asked on ~lockstep/step, not on a timer.
 """
 import collections
 import math
@@ -134,7 +134,7 @@ class LoopbackHardware:
             self.last_request_wall = None
             self.ack_pub = rospy.Publisher('lockstep/ack', LockstepAck, queue_size=100,
                                            tcp_nodelay=True)
-            rospy.Subscriber('lockstep/step', LockstepStep, self.on_step, queue_size=100,
+            rospy.Subscriber('~lockstep/step', LockstepStep, self.on_step, queue_size=100,
                              tcp_nodelay=True)
             threading.Thread(target=self.send_joins, daemon=True).start()
         else:

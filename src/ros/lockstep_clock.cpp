@@ -28,13 +28,15 @@ LockstepClock::LockstepClock(ros::NodeHandle nh, Settings settings, Tick tick, R
     : settings_(std::move(settings)), tick_(std::move(tick)), ready_(std::move(ready)),
       sequencer_(ros::this_node::getName(), settings_.participants, settings_.timeout),
       inputs_(settings_.subscriptions), pace_(settings_.step, settings_.speedup), queue_(nh.getCallbackQueue()),
-      created_wall_(ros::WallTime::now()) {
+      created_wall_(ros::WallTime::now()), nh_(nh) {
   if (!ros::Time::isSimTime())
     throw std::invalid_argument("lock-step clock publishes /clock, but /use_sim_time is not true, "
                                 "so no node would follow it");
   if (!queue_) queue_ = ros::getGlobalCallbackQueue();
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
-  request_pub_ = nh.advertise<spherical_robots::LockstepStep>("lockstep/step", 100);
+  // Each participant's requests on a topic of its own, so that a request wakes only the node it
+  // names: advertised now for the listed ones, so that they are connected when they ask to join.
+  for (const std::string& participant : settings_.participants) requestPublisher(participant);
   ack_sub_ = nh.subscribe("lockstep/ack", 100, &LockstepClock::onAck, this, hints);
   if (settings_.leader.empty()) {
     clock_pub_ = nh.advertise<rosgraph_msgs::Clock>("/clock", 100);
@@ -61,6 +63,10 @@ void LockstepClock::onAck(const ros::MessageEvent<spherical_robots::LockstepAck 
       ++forged_;
       ROS_WARN_STREAM_THROTTLE(1.0, "lock-step: ignoring a join request for " << ack.participant
                                                                               << " sent by " << sender);
+    } else if (requestPublisher(ack.participant).getNumSubscribers() == 0) {
+      // Not yet connected to its request topic: it asks again every 0.25 s.
+      ROS_INFO_STREAM_THROTTLE(1.0, "lock-step: " << ack.participant << " asks to join; waiting for "
+                                                  << "it to subscribe to its requests");
     } else if (sequencer_.join(ack.participant)) {
       ROS_INFO_STREAM("lock-step: " << ack.participant << " joined");
     }
@@ -180,9 +186,16 @@ void LockstepClock::pump() {
       step.input_stamps.push_back(timeOf(input.stamp));
       step.input_publishers.push_back(input.publisher);
     }
-    request_pub_.publish(step);
+    requestPublisher(request->participant).publish(step);
     return;
   }
+}
+
+ros::Publisher& LockstepClock::requestPublisher(const std::string& participant) {
+  auto [it, inserted] = request_pubs_.try_emplace(participant);
+  if (inserted)
+    it->second = nh_.advertise<spherical_robots::LockstepStep>(participant + "/lockstep/step", 100);
+  return it->second;
 }
 
 void LockstepClock::received(const std::string& topic, const ros::Time& stamp,

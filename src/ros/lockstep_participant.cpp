@@ -50,11 +50,12 @@ LockstepParticipant::LockstepParticipant(ros::NodeHandle nh, const ros::NodeHand
       inputs_(topicsOf(subscriptions_)), work_(std::move(work)), rejoin_after_(rejoin_after) {
   // Queues long enough that no request or acknowledgement is lost while a node is descheduled.
   ack_pub_ = nh.advertise<spherical_robots::LockstepAck>("lockstep/ack", 100);
-  request_sub_ = nh.subscribe("lockstep/step", 100, &LockstepParticipant::onRequest, this,
-                              ros::TransportHints().tcpNoDelay());
+  // Its own requests only (docs/lockstep.md): the plant publishes each participant's on that
+  // participant's ~lockstep/step.
+  request_sub_ = ros::NodeHandle(pnh, "lockstep").subscribe("step", 100, &LockstepParticipant::onRequest,
+                                                            this, ros::TransportHints().tcpNoDelay());
   join_timer_ = nh.createWallTimer(ros::WallDuration(0.25), &LockstepParticipant::sendJoin, this);
-  ROS_INFO_STREAM(name_ << " takes part in lock-step time (" << nh.resolveName("lockstep/step")
-                        << ")");
+  ROS_INFO_STREAM(name_ << " takes part in lock-step time (" << request_sub_.getTopic() << ")");
 }
 
 void LockstepParticipant::sendJoin(const ros::WallTimerEvent&) {

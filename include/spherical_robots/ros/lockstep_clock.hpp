@@ -1,7 +1,8 @@
 #pragma once
 // The lock-step clock mode of a plant (plant_clock.hpp, docs/lockstep.md): the plant steps,
 // publishes /clock and its messages, then asks each participant of <ns>/lockstep/participants
-// in turn (lockstep/step) and waits for its acknowledgement (lockstep/ack), then for the
+// in turn (on the participant's own <participant>/lockstep/step) and waits for its
+// acknowledgement (<ns>/lockstep/ack), then for the
 // messages the participants published that the plant reads, and only then steps again. The
 // decisions are core/lockstep_sequencer.hpp's; this class is their transport, pace and services.
 // With a leader (a second stack on the master), the plant does not publish /clock: it is a
@@ -18,6 +19,7 @@
 #include <std_srvs/Empty.h>
 #include <std_srvs/Trigger.h>
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -74,6 +76,9 @@ class LockstepClock : public PlantClock {
   void endStep();
   /// Hands out the step's requests until one must be waited for.
   void pump();
+  /// The publisher of `participant`'s requests, advertised on first use; ready once the
+  /// participant's subscription has connected (a request sent before that would be lost).
+  ros::Publisher& requestPublisher(const std::string& participant);
   /// Ends the step once the messages the plant waits for are in.
   void finishIfInputsIn();
   bool pause(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
@@ -99,7 +104,8 @@ class LockstepClock : public PlantClock {
   unsigned long unexpected_ = 0;
   std::vector<std::string> dropped_;  ///< dropped since the last report
   ros::Publisher clock_pub_;
-  ros::Publisher request_pub_;
+  ros::NodeHandle nh_;
+  std::map<std::string, ros::Publisher> request_pubs_;  ///< by participant: <participant>/lockstep/step
   ros::Subscriber ack_sub_;
   ros::ServiceServer pause_srv_, resume_srv_, step_srv_;
   ros::WallTimer poll_timer_;
