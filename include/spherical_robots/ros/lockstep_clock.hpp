@@ -76,8 +76,8 @@ class LockstepClock : public PlantClock {
   void endStep();
   /// Hands out the step's requests until one must be waited for.
   void pump();
-  /// The publisher of `participant`'s requests, advertised on first use; ready once the
-  /// participant's subscription has connected (a request sent before that would be lost).
+  /// The publisher of `participant`'s requests, advertised on first use (a join is taken only
+  /// once the participant has subscribed to it: a request sent before that would be lost).
   ros::Publisher& requestPublisher(const std::string& participant);
   /// Ends the step once the messages the plant waits for are in.
   void finishIfInputsIn();

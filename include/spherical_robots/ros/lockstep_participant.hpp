@@ -1,9 +1,9 @@
 #pragma once
 // A node's side of lock-step simulated time (docs/lockstep.md). The stack's launch file lists
 // the loop's participants in <ns>/lockstep/participants; a listed node does its periodic work
-// when its plant asks for it on lockstep/step, not on a timer, takes the step's time from the
-// request, and acknowledges on lockstep/ack once it has published (stamped with the step's time)
-// everything it publishes for the step.
+// when its plant asks for it on the node's own ~lockstep/step, not on a timer, takes the step's
+// time from the request, and acknowledges on lockstep/ack once it has published (stamped with
+// the step's time) everything it publishes for the step.
 
 #include <ros/message_event.h>
 #include <ros/node_handle.h>
