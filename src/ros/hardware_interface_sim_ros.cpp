@@ -127,7 +127,7 @@ void HardwareInterfaceSimRos::commandCallback(
   } else {
     command_input_.reject(reason);  // the actuators keep the last good set-points
   }
-  if (lockstep_) lockstep_->received(command_sub_.getTopic(), stamp, event.getPublisherName());
+  if (lockstep_) lockstep_->received(command_sub_.getTopic(), event);
 }
 
 void HardwareInterfaceSimRos::eStopCallback(const std_msgs::Bool::ConstPtr& msg) {

@@ -185,7 +185,7 @@ void NormaControllerRos::onActuatorState(const ros::MessageEvent<sensor_msgs::Jo
   } catch (const std::invalid_argument& e) {
     actuator_input_.reject(e.what());
   }
-  if (work_.participant()) work_.participant()->received(actuator_sub_.getTopic(), msg.header.stamp, event.getPublisherName());
+  if (work_.participant()) work_.participant()->received(actuator_sub_.getTopic(), event);
 }
 
 ros::Time NormaControllerRos::now() const { return workingTime(work_.participant()); }
@@ -207,7 +207,7 @@ void NormaControllerRos::onOdometry(const ros::MessageEvent<nav_msgs::Odometry c
   } catch (const std::invalid_argument& e) {
     odom_input_.reject(e.what());  // the last good pose stays
   }
-  if (work_.participant()) work_.participant()->received(odom_sub_.getTopic(), msg.header.stamp, event.getPublisherName());
+  if (work_.participant()) work_.participant()->received(odom_sub_.getTopic(), event);
 }
 
 void NormaControllerRos::control(const sensor_msgs::JointState& msg) {

@@ -201,7 +201,7 @@ void PurePursuitControllerRos::onOdometry(const ros::MessageEvent<nav_msgs::Odom
     if (primary) input_.reject(e.what());
     ROS_WARN_STREAM_THROTTLE(1.0, "Ignoring odom: " << e.what());
   }
-  if (lockstep_) lockstep_->received(odom_sub_.getTopic(), msg.header.stamp, event.getPublisherName());
+  if (lockstep_) lockstep_->received(odom_sub_.getTopic(), event);
 }
 
 void PurePursuitControllerRos::onJointStates(const ros::MessageEvent<sensor_msgs::JointState const>& event) {
@@ -213,7 +213,7 @@ void PurePursuitControllerRos::onJointStates(const ros::MessageEvent<sensor_msgs
   } catch (const std::invalid_argument& e) {
     tilt_input_.reject(e.what());
   }
-  if (lockstep_) lockstep_->received(joint_sub_.getTopic(), msg.header.stamp, event.getPublisherName());
+  if (lockstep_) lockstep_->received(joint_sub_.getTopic(), event);
 }
 
 void PurePursuitControllerRos::acceptStamp(const ros::Time& stamp, const std::string& topic) const {

@@ -299,7 +299,7 @@ void RotorPlannerRos::onOdometry(const ros::MessageEvent<nav_msgs::Odometry cons
   } catch (const std::invalid_argument& error) {
     odom_input_.reject(error.what());  // logged; the last good rest stays
   }
-  if (lockstep_) lockstep_->received(odom_sub_.getTopic(), msg.header.stamp, event.getPublisherName());
+  if (lockstep_) lockstep_->received(odom_sub_.getTopic(), event);
 }
 
 }  // namespace spherical_robots

@@ -63,6 +63,11 @@ class LockstepParticipant {
   /// getPublisherName()); call from the subscription's callback, after the node took the message
   /// in or rejected it.
   void received(const std::string& topic, const ros::Time& stamp, const std::string& publisher);
+  /// The same from the subscription's message event: its message's header stamp and publisher.
+  template <typename Message>
+  void received(const std::string& topic, const ros::MessageEvent<Message const>& event) {
+    received(topic, event.getConstMessage()->header.stamp, event.getPublisherName());
+  }
   /// Acknowledges the step whose work returned nullopt.
   void answer(const Done& done);
   /// The time of the latest step worked at (zero before the first).
@@ -127,7 +132,7 @@ class MessageDrivenWork {
       return;
     }
     latest_ = message;
-    participant_->received(topic, message.header.stamp, event.getPublisherName());
+    participant_->received(topic, event);
   }
   /// Null outside lock-step (another input's callback reports its messages to it).
   LockstepParticipant* participant() const { return participant_.get(); }
