@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 
+#include "spherical_robots/core/latest_per_publisher.hpp"
 #include "spherical_robots/core/lockstep_inputs.hpp"
 #include "spherical_robots/core/lockstep_sequencer.hpp"
 
@@ -217,6 +218,47 @@ TEST(LockstepInputs, CountsOnlyTheNamedPublishersMessages) {
   // A request that names no publisher (from a plant older than the field) takes any.
   inputs.expect({{odom, 4 * kStep, ""}});
   EXPECT_TRUE(inputs.satisfied()) << "the stray message from the future counts where any does";
+}
+
+// A message-driven participant (the friction drive, the FreeBOT IK, the Norma controller) works on
+// the message stamped with the step's time from the publisher its request names: a stray node's
+// message stamped alike, arriving after the loop's, does not replace it; nor before it.
+TEST(LatestPerPublisher, TheStepsInputIsTheNamedPublishersMessage) {
+  const std::string command = "/roller/drive/command";
+  const std::string stray = "/hostile_input_check";
+  LockstepInputs inputs({command});
+  LatestPerPublisher<std::string> latest;
+  latest.keep(kController, kStep, "loop's");
+  latest.keep(stray, kStep, "stray, after");
+  inputs.expect({{command, kStep, kController}});
+  const std::optional<std::string> publisher = inputs.expectedPublisher(command);
+  ASSERT_TRUE(publisher.has_value());
+  EXPECT_EQ(*publisher, kController);
+  const std::string* input = latest.at(kStep, *publisher);
+  ASSERT_NE(input, nullptr);
+  EXPECT_EQ(*input, "loop's");
+  // Stray first, then the loop's.
+  latest.keep(stray, 2 * kStep, "stray, before");
+  latest.keep(kController, 2 * kStep, "loop's 2");
+  input = latest.at(2 * kStep, kController);
+  ASSERT_NE(input, nullptr);
+  EXPECT_EQ(*input, "loop's 2");
+  // Only a stray message stamped with the step's time: nothing to work on.
+  latest.keep(stray, 3 * kStep, "stray only");
+  EXPECT_EQ(latest.at(3 * kStep, kController), nullptr);
+  // A request that names no publisher takes the latest to arrive of those stamped alike.
+  latest.keep(kController, 4 * kStep, "loop's 4");
+  latest.keep(stray, 4 * kStep, "stray 4");
+  input = latest.at(4 * kStep, "");
+  ASSERT_NE(input, nullptr);
+  EXPECT_EQ(*input, "stray 4");
+  EXPECT_EQ(latest.at(5 * kStep, ""), nullptr);
+  // A topic the request does not list was not published in the loop: no input on it.
+  inputs.expect({{"/roller/terrain_state", kStep, kPlant}});
+  EXPECT_FALSE(inputs.expectedPublisher(command).has_value());
+  inputs.expect({{command, kStep, ""}});
+  ASSERT_TRUE(inputs.expectedPublisher(command).has_value());
+  EXPECT_EQ(*inputs.expectedPublisher(command), "");
 }
 
 }  // namespace

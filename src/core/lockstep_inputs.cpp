@@ -35,6 +35,12 @@ bool LockstepInputs::satisfied() const {
                      [this](const auto& expected) { return arrived(expected.first, expected.second); });
 }
 
+std::optional<std::string> LockstepInputs::expectedPublisher(const std::string& topic) const {
+  const auto it = expected_.find(topic);
+  if (it == expected_.end()) return std::nullopt;
+  return it->second.publisher;
+}
+
 std::vector<std::string> LockstepInputs::missing() const {
   std::vector<std::string> topics;
   for (const auto& [topic, expected] : expected_)

@@ -1,7 +1,5 @@
 #include "spherical_robots/ros/lockstep_participant.hpp"
 
-#include "spherical_robots/ros/conversions.hpp"
-
 #include <ros/console.h>
 
 #include <algorithm>

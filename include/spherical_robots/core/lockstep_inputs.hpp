@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,6 +30,10 @@ class LockstepInputs {
   void expect(const std::vector<PublishedTopic>& inputs);
   /// Every expected message has arrived (from its publisher, or from any where none is named).
   bool satisfied() const;
+  /// The publisher whose message on `topic` the current request waits for: its caller id, empty
+  /// where the request names none (any publisher's will do); nullopt if the request does not
+  /// list the topic (nothing was published on it in the loop since this node last worked).
+  std::optional<std::string> expectedPublisher(const std::string& topic) const;
   /// The expected topics that have not delivered yet (for a log line when a wait is long).
   std::vector<std::string> missing() const;
 

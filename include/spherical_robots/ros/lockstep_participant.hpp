@@ -18,7 +18,9 @@
 #include <vector>
 
 #include "spherical_robots/LockstepStep.h"
+#include "spherical_robots/core/latest_per_publisher.hpp"
 #include "spherical_robots/core/lockstep_inputs.hpp"
+#include "spherical_robots/ros/conversions.hpp"
 #include "spherical_robots/ros/loop_publishers.hpp"
 
 namespace spherical_robots {
@@ -68,6 +70,11 @@ class LockstepParticipant {
   void received(const std::string& topic, const ros::MessageEvent<Message const>& event) {
     received(topic, event.getConstMessage()->header.stamp, event.getPublisherName());
   }
+  /// While the step works: the publisher whose message on `topic` it waited for (empty: any),
+  /// nullopt if its request did not list the topic (LockstepInputs::expectedPublisher).
+  std::optional<std::string> expectedPublisher(const std::string& topic) const {
+    return inputs_.expectedPublisher(topic);
+  }
   /// Acknowledges the step whose work returned nullopt.
   void answer(const Done& done);
   /// The time of the latest step worked at (zero before the first).
@@ -97,8 +104,9 @@ class LockstepParticipant {
 
 /// A node that answers each message of one input at once (a relay, a message-driven
 /// controller), in either time: outside lock-step it handles a message when it arrives; as a
-/// listed participant it handles, at each step, the message stamped with the step's time if one
-/// came (whatever order the transport delivered it in), and acknowledges what that published.
+/// listed participant it handles, at each step, the message stamped with the step's time from the
+/// publisher the request names, if one came (whatever order the transport delivered it in; a
+/// stray node's message stamped alike is not the loop's), and acknowledges what that published.
 template <typename Message>
 class MessageDrivenWork {
  public:
@@ -116,8 +124,9 @@ class MessageDrivenWork {
     participant_ = std::make_unique<LockstepParticipant>(
         nh, pnh, std::move(subscriptions), [this](const ros::Time& now) {
           LockstepParticipant::Done done;
-          if (latest_ && latest_->header.stamp == now) {
-            handle_(*latest_);
+          const std::optional<std::string> publisher = participant_->expectedPublisher(topic_);
+          if (const Message* input = publisher ? latest_.at(nanosecondsOf(now), *publisher) : nullptr) {
+            handle_(*input);
             done.published = publications_->take();
           }
           return done;
@@ -131,7 +140,8 @@ class MessageDrivenWork {
       publications_->take();
       return;
     }
-    latest_ = message;
+    topic_ = topic;
+    latest_.keep(event.getPublisherName(), nanosecondsOf(message.header.stamp), message);
     participant_->received(topic, event);
   }
   /// Null outside lock-step (another input's callback reports its messages to it).
@@ -140,7 +150,8 @@ class MessageDrivenWork {
  private:
   Handle handle_;
   StepPublications* publications_;
-  std::optional<Message> latest_;
+  std::string topic_;  ///< the input's resolved name
+  LatestPerPublisher<Message> latest_;
   std::unique_ptr<LockstepParticipant> participant_;
 };
 
