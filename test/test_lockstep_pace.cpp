@@ -1,13 +1,16 @@
 // LockstepPace: the cap of N times real time and the pause, resume and single-step services of
-// a lock-step clock, with time as numbers (core/lockstep_pace.hpp).
+// a lock-step clock, with time as numbers (core/lockstep_pace.hpp); ClockPublication: how often
+// it sends /clock (core/clock_publication.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
+#include "spherical_robots/core/clock_publication.hpp"
 #include "spherical_robots/core/lockstep_pace.hpp"
 
+using spherical_robots::ClockPublication;
 using spherical_robots::LockstepPace;
 
 namespace {
@@ -89,4 +92,43 @@ TEST(LockstepPace, RejectsAStepOrCapOutOfItsDomain) {
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   return RUN_ALL_TESTS();
+}
+
+// At 1 kHz of wall time, steps 0.3 ms of wall time apart (terrain at 33 x real time) are sent one in
+// four: the 1st, then the first at least 1 ms after it; a step not sent is sent once time waits,
+// and no step twice.
+TEST(ClockPublication, AtMostRateMessagesPerWallSecondAndTheLastStepOnceTimeWaits) {
+  ClockPublication clock(1000.0);
+  int sent = 0;
+  std::int64_t last_sent = -1;
+  for (int k = 0; k < 100; ++k) {
+    const std::int64_t step = k * 10 * kMs;
+    const double wall = 1.0 + k * 0.0003;
+    if (clock.due(step, wall, false)) {
+      if (last_sent >= 0) {
+        EXPECT_EQ(step - last_sent, 40 * kMs) << "at step " << k;
+      }
+      clock.published(step, wall);
+      last_sent = step;
+      ++sent;
+    }
+  }
+  EXPECT_EQ(sent, 25);
+  const std::int64_t last = 99 * 10 * kMs;
+  ASSERT_NE(last_sent, last) << "the last step was sent anyway: the next check proves nothing";
+  EXPECT_TRUE(clock.due(last, 1.0 + 99 * 0.0003, true)) << "time waits after an unsent step";
+  clock.published(last, 1.0 + 99 * 0.0003);
+  EXPECT_FALSE(clock.due(last, 5.0, true)) << "the same step twice";
+  EXPECT_FALSE(clock.due(last, 5.0, false));
+}
+
+TEST(ClockPublication, RateZeroSendsEveryStepAndANegativeOrNonFiniteRateIsRejected) {
+  ClockPublication every(0.0);
+  for (int k = 0; k < 10; ++k) {
+    ASSERT_TRUE(every.due(k * kMs, 1.0, false)) << "step " << k << " at the same wall time";
+    every.published(k * kMs, 1.0);
+  }
+  EXPECT_THROW(ClockPublication(-1.0), std::invalid_argument);
+  EXPECT_THROW(ClockPublication(std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
+  EXPECT_THROW(ClockPublication(std::numeric_limits<double>::infinity()), std::invalid_argument);
 }

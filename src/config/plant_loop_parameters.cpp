@@ -30,6 +30,7 @@ PlantLoopParameters loadPlantLoopParameters(const ParameterSource& source,
                                   "' must be an absolute namespace (\"/sphere\")");
     p.lockstep_timeout =
         positiveNumber(source, "lockstep_timeout", p.lockstep_leader.empty() ? 2.0 : 1.0);
+    p.clock_rate = nonNegativeNumber(source, "clock_rate", p.clock_rate);
   } else if (p.clock == ClockMode::kFree) {
     // The pace of simulated time; 0 would stop it.
     p.speedup = positiveNumber(source, "speedup", p.speedup);

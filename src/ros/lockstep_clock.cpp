@@ -27,7 +27,8 @@ std::string joined(const std::vector<std::string>& names) {
 LockstepClock::LockstepClock(ros::NodeHandle nh, Settings settings, Tick tick, Ready ready)
     : settings_(std::move(settings)), tick_(std::move(tick)), ready_(std::move(ready)),
       sequencer_(ros::this_node::getName(), settings_.participants, settings_.timeout),
-      inputs_(settings_.subscriptions), pace_(settings_.step, settings_.speedup), queue_(nh.getCallbackQueue()),
+      inputs_(settings_.subscriptions), pace_(settings_.step, settings_.speedup),
+      clock_publication_(settings_.clock_rate), queue_(nh.getCallbackQueue()),
       created_wall_(ros::WallTime::now()), nh_(nh) {
   if (!ros::Time::isSimTime())
     throw std::invalid_argument("lock-step clock publishes /clock, but /use_sim_time is not true, "
@@ -109,6 +110,8 @@ void LockstepClock::poll(const ros::WallTimerEvent&) {
     }
     return;
   }
+  // A step still waiting for an answer after a poll period: its time is sent (no-op if it was).
+  if (sequencer_.stepInProgress()) publishClock(true);
   if (const auto dropped = sequencer_.dropSilent(wall)) {
     dropped_.push_back(*dropped);
     ROS_ERROR_STREAM("lock-step: participant " << *dropped << " did not answer for "
@@ -129,6 +132,7 @@ void LockstepClock::schedule() {
   if (finished_ || scheduled_ || sequencer_.stepInProgress()) return;
   const auto delay = pace_.delayBefore(nanosecondsOf(now_ + ros::Duration(settings_.step)),
                                        ros::WallTime::now().toSec());
+  if (started_ && (!delay || *delay > 0.0)) publishClock(true);  // paused or paced: time waits
   if (!delay) return;
   scheduled_ = true;
   if (*delay > 0.0) {
@@ -158,15 +162,21 @@ void LockstepClock::runStepAt(const ros::Time& t) {
   in_run_step_ = true;
   now_ = t;
   pace_.started(nanosecondsOf(now_), ros::WallTime::now().toSec());
-  if (settings_.leader.empty()) {
-    rosgraph_msgs::Clock clock;
-    clock.clock = now_;
-    clock_pub_.publish(clock);
-  }
+  publishClock(false);
   const std::vector<std::string> published = tick_(now_);
   sequencer_.beginStep(nanosecondsOf(now_), published, ros::WallTime::now().toSec());
   pump();
   in_run_step_ = false;
+}
+
+void LockstepClock::publishClock(bool waiting) {
+  const double wall = ros::WallTime::now().toSec();
+  if (!settings_.leader.empty() || !clock_publication_.due(nanosecondsOf(now_), wall, waiting))
+    return;
+  rosgraph_msgs::Clock clock;
+  clock.clock = now_;
+  clock_pub_.publish(clock);
+  clock_publication_.published(nanosecondsOf(now_), wall);
 }
 
 void LockstepClock::pump() {
@@ -241,6 +251,7 @@ bool LockstepClock::stepOnce(std_srvs::Trigger::Request&, std_srvs::Trigger::Res
 
 void LockstepClock::finish() {
   finished_ = true;
+  publishClock(true);
   pace_.finished(ros::WallTime::now().toSec());
   constexpr double kDrainTime = 1.0;  // [s] of wall time for observers to take the last messages
   finish_timer_ = ros::NodeHandle().createWallTimer(

@@ -43,6 +43,7 @@ std::unique_ptr<PlantClock> makePlantClock(ros::NodeHandle nh, const ros::NodeHa
       settings.name = pnh.getNamespace();
       settings.timeout = parameters.lockstep_timeout;
       settings.start_timeout = parameters.start_timeout;
+      settings.clock_rate = parameters.clock_rate;
       settings.participants = lockstepParticipants(nh);
       settings.subscriptions = {actuators.getTopic()};
       return std::make_unique<LockstepClock>(nh, settings, std::move(tick), std::move(ready));

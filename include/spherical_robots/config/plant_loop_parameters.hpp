@@ -28,6 +28,9 @@ struct PlantLoopParameters {
   /// lockstep only: "" this plant owns /clock, else the absolute namespace of the stack that does.
   std::string lockstep_leader;
   double lockstep_timeout = 2.0;  ///< [s] of wall time (lockstep): a silent participant is dropped
+  /// lockstep: /clock messages per second of wall time at most (core/clock_publication.hpp);
+  /// 0: one every step.
+  double clock_rate = 1000.0;
   int wait_for_subscribers = 1;   ///< time starts once this many nodes read the plant's state
   double start_timeout = 10.0;    ///< [s] of wall time: time starts anyway, with a warning
   /// Where the stack's root frame (<ns>/odom; the FreeBOT's base) is in map: several robots on
@@ -44,7 +47,7 @@ struct PlantLoopParameters {
 /// trail_period, and speedup as the pace of clock free). Keys: step, publish_rate,
 /// state_timeout, trail_period (only if the default has a trail), duration, max_clock_step,
 /// clock (lockstep | free | ros, "ros"), speedup (lockstep: default 0, >= 0; free: > 0),
-/// lockstep_leader and lockstep_timeout, read in lockstep only (default 2 s, 1 s with a leader: a follower drops its own
+/// lockstep_leader, lockstep_timeout and clock_rate (>= 0, default 1000 Hz), read in lockstep only (default 2 s, 1 s with a leader: a follower drops its own
 /// silent participant before the leader would drop the follower), wait_for_subscribers
 /// (integer >= 0), start_timeout, origin_x, origin_y, origin_yaw (finite), checkpoint (none,
 /// ros_home or an absolute directory).

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "spherical_robots/LockstepAck.h"
+#include "spherical_robots/core/clock_publication.hpp"
 #include "spherical_robots/core/lockstep_inputs.hpp"
 #include "spherical_robots/core/lockstep_pace.hpp"
 #include "spherical_robots/core/lockstep_sequencer.hpp"
@@ -40,6 +41,7 @@ class LockstepClock : public PlantClock {
     double speedup = 0.0;      ///< [-] cap on the pace; 0: as fast as the participants allow
     double timeout = 2.0;      ///< [s] of wall time before a silent participant is dropped
     double start_timeout = 10.0;  ///< [s] of wall time to wait for the participants to join
+    double clock_rate = 1000.0;   ///< [Hz] of wall time: /clock messages at most; 0: every step
     std::vector<std::string> participants;   ///< resolved node names, in order of work
     std::vector<std::string> subscriptions;  ///< resolved topics the plant reads
     /// The namespace of the stack whose plant owns /clock; empty: this plant owns it.
@@ -76,6 +78,9 @@ class LockstepClock : public PlantClock {
   void endStep();
   /// Hands out the step's requests until one must be waited for.
   void pump();
+  /// Publishes /clock at the current step if it owns /clock and clock_publication_ says it is
+  /// due (`waiting`: time stands still after this step for now).
+  void publishClock(bool waiting);
   /// The publisher of `participant`'s requests, advertised on first use (a join is taken only
   /// once the participant has subscribed to it: a request sent before that would be lost).
   ros::Publisher& requestPublisher(const std::string& participant);
@@ -91,6 +96,7 @@ class LockstepClock : public PlantClock {
   LockstepSequencer sequencer_;
   LockstepInputs inputs_;
   LockstepPace pace_;
+  ClockPublication clock_publication_;
   ros::CallbackQueueInterface* queue_;
   bool started_ = false;
   bool scheduled_ = false;
