@@ -7,7 +7,10 @@ plant's own "real-time factor" on /diagnostics (simulated time since the first s
 since then), as reported last before the stack ended. No recorder or rviz runs beside it. Run it
 after sourcing the built workspace (scripts/env.sh: sr_source_workspace):
 
-    bench/stack_rtf.py [--repeats N] [--terrain-duration 200] [--norma-duration 30]
+    bench/stack_rtf.py [--repeats N] [--terrain-duration 200] [--norma-duration 30] [--low-latency]
+
+With --low-latency the stacks run with low_latency:=true (the CPUs' wake-up latency held at 0 us;
+as root; docs/lockstep.md, "Wake-up latency").
 
 It prints, per stack and way of running, the best real-time factor of the repeats (all of them
 in brackets), the wall time per plant step at that factor, the target and the ratio to it.
@@ -86,6 +89,8 @@ def main():
     parser.add_argument('--repeats', type=int, default=1)
     parser.add_argument('--terrain-duration', type=float, default=200.0, help='[s] simulated')
     parser.add_argument('--norma-duration', type=float, default=30.0, help='[s] simulated')
+    parser.add_argument('--low-latency', action='store_true',
+                        help='low_latency:=true: the CPU wake-up latency held at 0 us (needs root)')
     options, remappings = parser.parse_known_args()  # the listener's ROS remappings
     if remappings and not options.listen:
         parser.error('unknown arguments: %s' % ' '.join(remappings))
@@ -100,7 +105,8 @@ def main():
     for name, launch, args, suffix, step, targets in CASES:
         for nodelet, target in zip((False, True), targets):
             # The best of the repeats: the run the rest of the machine disturbed least.
-            rtfs = [run(launch, args, suffix, durations[launch], nodelet, workdir)
+            rtfs = [run(launch, args + (['low_latency:=true'] if options.low_latency else []),
+                        suffix, durations[launch], nodelet, workdir)
                     for _ in range(options.repeats)]
             best = max(rtfs)
             print('%-18s %-9s %7g %6.1f (%9s) %14.1f %7g %6.2f'

@@ -283,6 +283,7 @@ DOMAINS = {
     'hardware': Hardware(none_allowed=True),
     'actuator_models': ActuatorModels(),
     'nodelet': BOOLEAN,
+    'low_latency': BOOLEAN,
     'respawn': BOOLEAN,
     'wait_for_subscribers': Number(minimum=0, whole=True),
     'part': Part(),
