@@ -47,8 +47,9 @@ struct PlantLoopParameters {
 /// trail_period, and speedup as the pace of clock free). Keys: step, publish_rate,
 /// state_timeout, trail_period (only if the default has a trail), duration, max_clock_step,
 /// clock (lockstep | free | ros, "ros"), speedup (lockstep: default 0, >= 0; free: > 0),
-/// lockstep_leader, lockstep_timeout and clock_rate (>= 0, default 1000 Hz), read in lockstep only (default 2 s, 1 s with a leader: a follower drops its own
-/// silent participant before the leader would drop the follower), wait_for_subscribers
+/// lockstep_leader, lockstep_timeout (default 2 s, 1 s with a leader: a follower drops its own
+/// silent participant before the leader would drop the follower) and clock_rate (>= 0, default
+/// 1000 Hz), read in lockstep only, wait_for_subscribers
 /// (integer >= 0), start_timeout, origin_x, origin_y, origin_yaw (finite), checkpoint (none,
 /// ros_home or an absolute directory).
 /// @throw std::invalid_argument naming the origin, the key, the value and the limit.
