@@ -849,26 +849,41 @@ class SmoothnessCheck(StackFixture):
         gains = {'k_theta': 1.5, 'k_phi1': 1.2, 'k_phi2': 0.1, 'k_psi': 0.6, 'k_e': 0.4}
         errors = Recorder('tracking_error', TrackingError)
         try:
+            # The controller has worked at least to the last command this node has: the change
+            # takes effect at a later step. Which one depends on when the call lands, so the
+            # switch is found in the data: the first command from there that is eq 55 with the new
+            # gains; every command after it must be too.
+            before = self.commands.last().header.stamp.to_sec()
             client.update_configuration(dict(gains, law='paper'))
-            # Commands stamped a little after this node's clock are surely after the change.
-            changed = rospy.Time.now().to_sec() + 0.1
-            wait_until(lambda: self.commands.count() and
-                       self.commands.last().header.stamp.to_sec() >= changed + 2.0,
-                       'commands up to %.1f s' % (changed + 2.0))
+            wait_until(lambda: self.commands.last().header.stamp.to_sec() >= before + 3.0,
+                       'commands up to %.1f s' % (before + 3.0))
             by_stamp = {m.header.stamp: m for m in errors.since(0)
-                        if changed <= m.header.stamp.to_sec() <= changed + 2.0}
-            compared = 0
-            for command in self.commands.since(0):
-                error = by_stamp.get(command.header.stamp)
-                if error is None:
-                    continue
+                        if before < m.header.stamp.to_sec() <= before + 3.0}
+
+            def eq55(error):  # signs per docs/conventions.md
                 n = error.error_norm / (gains['k_e'] + error.error_norm)
                 v = error.desired_velocity
-                expected = {  # eq 55, signs per docs/conventions.md
-                    'theta': gains['k_theta'] * n * math.cos(error.zeta) +
-                             math.sqrt(v.x ** 2 + v.y ** 2 + v.z ** 2) / self.radius,
-                    'phi': -(gains['k_phi1'] * n + gains['k_phi2']) * math.sin(error.zeta),
-                    'psi': gains['k_psi'] * error.zeta}
+                return {'theta': gains['k_theta'] * n * math.cos(error.zeta) +
+                                 math.sqrt(v.x ** 2 + v.y ** 2 + v.z ** 2) / self.radius,
+                        'phi': -(gains['k_phi1'] * n + gains['k_phi2']) * math.sin(error.zeta),
+                        'psi': gains['k_psi'] * error.zeta}
+
+            def is_eq55(command, expected):
+                return all(abs(rate - expected[name]) <= 1e-9 * (1 + abs(rate))
+                           for name, rate in zip(command.name, command.velocity))
+
+            pairs = [(command, by_stamp[command.header.stamp]) for command in self.commands.since(0)
+                     if command.header.stamp in by_stamp]
+            switch = next((i for i, (command, error) in enumerate(pairs)
+                           if is_eq55(command, eq55(error))), None)
+            self.assertIsNotNone(switch, 'no command within 3 s after the change is eq 55 with the '
+                                         'new gains')
+            switched_at = pairs[switch][0].header.stamp.to_sec()
+            self.assertLess(switched_at - before, 1.0, 'the change took effect %.2f s (simulated) '
+                            'after the last command seen before it' % (switched_at - before))
+            compared = 0
+            for command, error in pairs[switch:]:
+                expected = eq55(error)
                 for name, rate in zip(command.name, command.velocity):
                     self.assertAlmostEqual(rate, expected[name], delta=1e-9 * (1 + abs(rate)),
                                            msg='%s at %.2f s' % (name, command.header.stamp.to_sec()))
