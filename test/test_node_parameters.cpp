@@ -28,6 +28,7 @@
 
 namespace config = spherical_robots::config;
 namespace sr = spherical_robots;
+using spherical_robots::LoopCpuSetting;
 using spherical_robots::test_support::TempYaml;
 
 namespace {
@@ -97,6 +98,20 @@ TEST(PlantLoopParameters, MalformedParametersAreNamed) {
   EXPECT_INVALID_ARGUMENT(loop("publish_rate: fast\n"), "publish_rate", "number");
   EXPECT_INVALID_ARGUMENT(loop("checkpoint: checkpoints\n"), "checkpoint", "checkpoints",
                           "none, ros_home or an absolute directory");
+  EXPECT_INVALID_ARGUMENT(loop("clock: lockstep\nloop_cpu: fast\n"), "loop_cpu", "fast",
+                          "auto, none or a CPU number");
+  EXPECT_INVALID_ARGUMENT(loop("clock: lockstep\nloop_cpu: -1\n"), "loop_cpu", "-1", ">= 0");
+  EXPECT_INVALID_ARGUMENT(loop("clock: lockstep\nloop_cpu: 0.5\n"), "loop_cpu", "0.5", "integer");
+}
+
+TEST(PlantLoopParameters, LoopCpuIsAutoByDefaultAWordOrANumber) {
+  using Kind = LoopCpuSetting::Kind;
+  EXPECT_EQ(loop("clock: lockstep\n").loop_cpu.kind, Kind::kAuto);
+  EXPECT_EQ(loop("clock: lockstep\nloop_cpu: none\n").loop_cpu.kind, Kind::kNone);
+  const auto fixed = loop("clock: lockstep\nloop_cpu: 1\n").loop_cpu;
+  EXPECT_EQ(fixed.kind, Kind::kFixed);
+  EXPECT_EQ(fixed.cpu, 1);
+  EXPECT_EQ(loop("clock: lockstep\nloop_cpu: '3'\n").loop_cpu.cpu, 3);
 }
 
 TEST(PlantLoopParameters, CheckpointNoneByDefault) {

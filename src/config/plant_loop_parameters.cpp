@@ -11,6 +11,21 @@ ClockMode clockModeFromString(const std::string& name) {
   throw std::invalid_argument("unknown clock mode (lockstep | free | ros)");
 }
 
+namespace {
+
+/// loop_cpu as a word (auto, none, "1") or as a number (1, as YAML and roslaunch type it).
+LoopCpuSetting loopCpuSetting(const ParameterSource& source, const LoopCpuSetting& fallback) {
+  bool is_number = false;
+  try {
+    is_number = source.number("loop_cpu").has_value();
+  } catch (const std::invalid_argument&) {  // a word: parsed below
+  }
+  if (is_number) return {LoopCpuSetting::Kind::kFixed, wholeNumber(source, "loop_cpu", 0, 0)};
+  return parsedText(source, "loop_cpu", fallback.toString(), LoopCpuSetting::fromString);
+}
+
+}  // namespace
+
 PlantLoopParameters loadPlantLoopParameters(const ParameterSource& source,
                                             const PlantLoopParameters& defaults) {
   PlantLoopParameters p = defaults;
@@ -31,6 +46,7 @@ PlantLoopParameters loadPlantLoopParameters(const ParameterSource& source,
     p.lockstep_timeout =
         positiveNumber(source, "lockstep_timeout", p.lockstep_leader.empty() ? 2.0 : 1.0);
     p.clock_rate = nonNegativeNumber(source, "clock_rate", p.clock_rate);
+    p.loop_cpu = loopCpuSetting(source, p.loop_cpu);
   } else if (p.clock == ClockMode::kFree) {
     // The pace of simulated time; 0 would stop it.
     p.speedup = positiveNumber(source, "speedup", p.speedup);

@@ -30,6 +30,10 @@ LockstepClock::LockstepClock(ros::NodeHandle nh, Settings settings, Tick tick, R
       inputs_(settings_.subscriptions), pace_(settings_.step, settings_.speedup),
       clock_publication_(settings_.clock_rate), queue_(nh.getCallbackQueue()),
       created_wall_(ros::WallTime::now()), nh_(nh) {
+  if (settings_.loop_cpu.kind == LoopCpuSetting::Kind::kAuto)
+    cpu_ticks_at_creation_ = readCpuTicks();
+  else  // a fixed CPU checked now, so that a bad one stops the plant before time starts
+    loopCpuFor(settings_.loop_cpu, allowedCpus(), {}, {});
   if (!ros::Time::isSimTime())
     throw std::invalid_argument("lock-step clock publishes /clock, but /use_sim_time is not true, "
                                 "so no node would follow it");
@@ -98,6 +102,7 @@ void LockstepClock::poll(const ros::WallTimerEvent&) {
                       << settings_.start_timeout << " s");
     started_ = true;
     if (settings_.leader.empty()) {
+      placeLoop();
       schedule();
     } else {
       // Asked to join only now, so the leader never waits for a stack that cannot answer yet.
@@ -126,6 +131,19 @@ void LockstepClock::poll(const ros::WallTimerEvent&) {
     awaiting_inputs_ = false;
     endStep();
   }
+}
+
+void LockstepClock::placeLoop() {
+  const std::vector<int> allowed = allowedCpus();
+  loop_cpu_ = loopCpuFor(settings_.loop_cpu, allowed, cpu_ticks_at_creation_, readCpuTicks());
+  if (loop_cpu_ < 0) return;
+  if (const std::string failure = pinProcessToCpu(loop_cpu_); !failure.empty()) {
+    ROS_WARN_STREAM("lock-step: the loop stays spread over the CPUs: " << failure);
+    loop_cpu_ = -1;
+    return;
+  }
+  ROS_INFO_STREAM("lock-step: the loop runs on CPU " << loop_cpu_ << " of " << allowed.size()
+                  << " (loop_cpu " << settings_.loop_cpu.toString() << ")");
 }
 
 void LockstepClock::schedule() {
@@ -191,6 +209,7 @@ void LockstepClock::pump() {
     spherical_robots::LockstepStep step;
     step.stamp = timeOf(request->stamp);
     step.participant = request->participant;
+    step.cpu = leader_link_ ? leader_link_->cpu() : loop_cpu_;
     for (const PublishedTopic& input : request->inputs) {
       step.inputs.push_back(input.topic);
       step.input_stamps.push_back(timeOf(input.stamp));
@@ -271,6 +290,7 @@ void LockstepClock::report(diagnostic_updater::DiagnosticStatusWrapper& status) 
   status.add("lock-step participants", joined(members));
   status.add("lock-step participants absent", joined(absent));
   status.add("lock-step paused", pace_.paused());
+  status.add("lock-step CPU", leader_link_ ? leader_link_->cpu() : loop_cpu_);
   status.add("forged acknowledgements", forged_);
   status.add("unexpected acknowledgements", unexpected_);
   if (const std::string* awaited = sequencer_.awaited()) status.add("awaiting", *awaited);

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "spherical_robots/LockstepAck.h"
+#include "spherical_robots/core/loop_cpu.hpp"
 #include "spherical_robots/ros/ros_parameter_source.hpp"
 #include "spherical_robots/ros/shared_message.hpp"
 
@@ -87,6 +88,15 @@ void LockstepParticipant::received(const std::string& topic, const ros::Time& st
 void LockstepParticipant::onRequest(const spherical_robots::LockstepStep& request) {
   if (request.participant != name_) return;
   last_request_wall_ = ros::WallTime::now();
+  if (request.cpu >= 0 && request.cpu != cpu_) {
+    // Once per CPU named: in a nodelet manager the plant has moved the process already.
+    const std::string failure = pinProcessToCpu(request.cpu);
+    if (failure.empty())
+      ROS_INFO_STREAM(name_ << " runs on CPU " << request.cpu << ", the lock-step loop's");
+    else
+      ROS_WARN_STREAM(name_ << " stays where it is: moving to the lock-step loop's CPU failed: " << failure);
+    cpu_ = request.cpu;
+  }
   std::vector<PublishedTopic> inputs;
   const bool publishers_named = request.input_publishers.size() == request.inputs.size();
   for (std::size_t i = 0; i < request.inputs.size() && i < request.input_stamps.size(); ++i)

@@ -44,6 +44,7 @@ std::unique_ptr<PlantClock> makePlantClock(ros::NodeHandle nh, const ros::NodeHa
       settings.timeout = parameters.lockstep_timeout;
       settings.start_timeout = parameters.start_timeout;
       settings.clock_rate = parameters.clock_rate;
+      settings.loop_cpu = parameters.loop_cpu;
       settings.participants = lockstepParticipants(nh);
       settings.subscriptions = {actuators.getTopic()};
       return std::make_unique<LockstepClock>(nh, settings, std::move(tick), std::move(ready));

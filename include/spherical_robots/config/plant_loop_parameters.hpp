@@ -6,6 +6,7 @@
 
 #include "spherical_robots/config/parameter_source.hpp"
 #include "spherical_robots/core/clock_jump.hpp"
+#include "spherical_robots/core/loop_cpu.hpp"
 
 namespace spherical_robots::config {
 
@@ -31,6 +32,8 @@ struct PlantLoopParameters {
   /// lockstep: /clock messages per second of wall time at most (core/clock_publication.hpp);
   /// 0: one every step.
   double clock_rate = 1000.0;
+  /// lockstep: the CPU the loop runs on (core/loop_cpu.hpp): auto, none or a CPU number.
+  LoopCpuSetting loop_cpu;
   int wait_for_subscribers = 1;   ///< time starts once this many nodes read the plant's state
   double start_timeout = 10.0;    ///< [s] of wall time: time starts anyway, with a warning
   /// Where the stack's root frame (<ns>/odom; the FreeBOT's base) is in map: several robots on
@@ -48,8 +51,9 @@ struct PlantLoopParameters {
 /// state_timeout, trail_period (only if the default has a trail), duration, max_clock_step,
 /// clock (lockstep | free | ros, "ros"), speedup (lockstep: default 0, >= 0; free: > 0),
 /// lockstep_leader, lockstep_timeout (default 2 s, 1 s with a leader: a follower drops its own
-/// silent participant before the leader would drop the follower) and clock_rate (>= 0, default
-/// 1000 Hz), read in lockstep only, wait_for_subscribers
+/// silent participant before the leader would drop the follower), clock_rate (>= 0, default
+/// 1000 Hz) and loop_cpu (auto, none or a CPU number; default auto), read in lockstep only,
+/// wait_for_subscribers
 /// (integer >= 0), start_timeout, origin_x, origin_y, origin_yaw (finite), checkpoint (none,
 /// ros_home or an absolute directory).
 /// @throw std::invalid_argument naming the origin, the key, the value and the limit.

@@ -29,6 +29,7 @@
 #include "spherical_robots/core/lockstep_inputs.hpp"
 #include "spherical_robots/core/lockstep_pace.hpp"
 #include "spherical_robots/core/lockstep_sequencer.hpp"
+#include "spherical_robots/core/loop_cpu.hpp"
 #include "spherical_robots/ros/lockstep_participant.hpp"
 #include "spherical_robots/ros/plant_clock.hpp"
 
@@ -42,6 +43,8 @@ class LockstepClock : public PlantClock {
     double timeout = 2.0;      ///< [s] of wall time before a silent participant is dropped
     double start_timeout = 10.0;  ///< [s] of wall time to wait for the participants to join
     double clock_rate = 1000.0;   ///< [Hz] of wall time: /clock messages at most; 0: every step
+    /// Where the loop runs (core/loop_cpu.hpp); a follower's loop runs where its leader's does.
+    LoopCpuSetting loop_cpu;
     std::vector<std::string> participants;   ///< resolved node names, in order of work
     std::vector<std::string> subscriptions;  ///< resolved topics the plant reads
     /// The namespace of the stack whose plant owns /clock; empty: this plant owns it.
@@ -69,6 +72,8 @@ class LockstepClock : public PlantClock {
  private:
   void onAck(const ros::MessageEvent<spherical_robots::LockstepAck const>& event);
   void poll(const ros::WallTimerEvent&);
+  /// At start: moves this process to the loop's CPU, chosen now if loop_cpu is auto.
+  void placeLoop();
   /// Runs the next step now or when the pace allows, unless paused.
   void schedule();
   /// Steps to the next step time of its own, or to the leader's.
@@ -103,6 +108,8 @@ class LockstepClock : public PlantClock {
   bool in_run_step_ = false;  ///< inside runStepAt: a step that ends there is not called again from it
   bool awaiting_inputs_ = false;
   bool finished_ = false;
+  int loop_cpu_ = -1;  ///< the CPU this loop runs on, named in every request; -1: none
+  std::map<int, CpuTicks> cpu_ticks_at_creation_;  ///< for loop_cpu auto
   ros::Time now_;
   ros::WallTime created_wall_;
   ros::WallTime inputs_since_;

@@ -80,6 +80,8 @@ class LockstepParticipant {
   /// The time of the latest step worked at (zero before the first).
   const ros::Time& now() const { return now_; }
   unsigned long steps() const { return steps_; }
+  /// The CPU the latest request named and this process's threads were moved to (-1: none).
+  int cpu() const { return cpu_; }
 
  private:
   void onRequest(const spherical_robots::LockstepStep& request);
@@ -97,6 +99,7 @@ class LockstepParticipant {
   ros::WallTime last_request_wall_;
   ros::WallTime connected_since_;  ///< since when every subscription has a publisher
   unsigned long steps_ = 0;
+  int cpu_ = -1;
   ros::Publisher ack_pub_;
   ros::Subscriber request_sub_;
   ros::WallTimer join_timer_;
