@@ -8,9 +8,11 @@ since then), as reported last before the stack ended. No recorder or rviz runs b
 after sourcing the built workspace (scripts/env.sh: sr_source_workspace):
 
     bench/stack_rtf.py [--repeats N] [--terrain-duration 200] [--norma-duration 30] [--low-latency]
+                       [--loop-cpu auto|none|N]
 
 With --low-latency the stacks run with low_latency:=true (the CPUs' wake-up latency held at 0 us;
-as root; docs/lockstep.md, "Wake-up latency").
+as root; docs/lockstep.md, "Wake-up latency"); --loop-cpu none spreads the loop's nodes over the
+CPUs as the kernel places them (the default, auto, puts them on one: "One CPU for the loop").
 
 It prints, per stack and way of running, the best real-time factor of the repeats (all of them
 in brackets), the wall time per plant step at that factor, the target and the ratio to it.
@@ -91,6 +93,8 @@ def main():
     parser.add_argument('--norma-duration', type=float, default=30.0, help='[s] simulated')
     parser.add_argument('--low-latency', action='store_true',
                         help='low_latency:=true: the CPU wake-up latency held at 0 us (needs root)')
+    parser.add_argument('--loop-cpu', default='auto',
+                        help="loop_cpu:= (auto, none or a CPU number; default auto)")
     options, remappings = parser.parse_known_args()  # the listener's ROS remappings
     if remappings and not options.listen:
         parser.error('unknown arguments: %s' % ' '.join(remappings))
@@ -105,7 +109,8 @@ def main():
     for name, launch, args, suffix, step, targets in CASES:
         for nodelet, target in zip((False, True), targets):
             # The best of the repeats: the run the rest of the machine disturbed least.
-            rtfs = [run(launch, args + (['low_latency:=true'] if options.low_latency else []),
+            rtfs = [run(launch, args + ['loop_cpu:=' + options.loop_cpu]
+                        + (['low_latency:=true'] if options.low_latency else []),
                         suffix, durations[launch], nodelet, workdir)
                     for _ in range(options.repeats)]
             best = max(rtfs)

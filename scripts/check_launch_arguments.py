@@ -125,6 +125,16 @@ class NumberList(Domain):
         return None
 
 
+class LoopCpu(Domain):
+    """auto, none, or a CPU this process may run on (os.sched_getaffinity)."""
+
+    def check(self, value, arguments):
+        cpus = sorted(os.sched_getaffinity(0))
+        if value in ('auto', 'none') or (re.match(r'^[0-9]+$', value) and int(value) in cpus):
+            return None
+        return 'expected auto, none or one of the CPUs %s' % ', '.join(map(str, cpus))
+
+
 class Optional(Domain):
     """'none', or what the inner domain allows."""
 
@@ -284,6 +294,7 @@ DOMAINS = {
     'actuator_models': ActuatorModels(),
     'nodelet': BOOLEAN,
     'low_latency': BOOLEAN,
+    'loop_cpu': LoopCpu(),
     'respawn': BOOLEAN,
     'wait_for_subscribers': Number(minimum=0, whole=True),
     'part': Part(),

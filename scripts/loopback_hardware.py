@@ -19,6 +19,7 @@ written from that text: it updates and publishes when asked on ~lockstep/step, n
 """
 import collections
 import math
+import os
 import sys
 import threading
 import time
@@ -132,6 +133,7 @@ class LoopbackHardware:
             self.pending = None    # the stamp of the request not yet worked
             self.step_time = None  # [s] the latest step worked at
             self.last_request_wall = None
+            self.loop_cpu = -1     # the CPU this process was moved to (-1: none)
             self.ack_pub = rospy.Publisher('lockstep/ack', LockstepAck, queue_size=100,
                                            tcp_nodelay=True)
             rospy.Subscriber('~lockstep/step', LockstepStep, self.on_step, queue_size=100,
@@ -159,6 +161,7 @@ class LoopbackHardware:
     def on_step(self, request):
         if request.participant != rospy.get_name():
             return
+        self.follow_loop_cpu(request.cpu)
         with self.lock:
             self.last_request_wall = time.time()
             publishers = (request.input_publishers
@@ -170,6 +173,23 @@ class LoopbackHardware:
             self.pending = request.stamp
             self.work_if_ready()
         self.updater.update()
+
+    def follow_loop_cpu(self, cpu):
+        """Every thread of this process onto the loop's CPU, once per CPU a request names; -1
+        names none (docs/lockstep.md, "One CPU for the loop")."""
+        if cpu < 0 or cpu == self.loop_cpu:
+            return
+        self.loop_cpu = cpu
+        for tid in os.listdir('/proc/self/task'):
+            try:
+                os.sched_setaffinity(int(tid), {cpu})
+            except ProcessLookupError:  # ended since the listing
+                pass
+            except OSError as error:
+                rospy.logwarn('%s stays where it is: moving to CPU %d failed: %s'
+                              % (rospy.get_name(), cpu, error))
+                return
+        rospy.loginfo("%s runs on CPU %d, the lock-step loop's", rospy.get_name(), cpu)
 
     def arrived(self, topic, stamp, publisher):
         """A message on topic at least stamp [ns] recent came from publisher (any if '')."""
