@@ -17,6 +17,7 @@ unreachable verdict. The last test kills freebot_ik to fire the hardware's watch
 """
 import functools
 import math
+import time
 import unittest
 
 import rospy
@@ -26,6 +27,7 @@ from actionlib_msgs.msg import GoalStatus
 from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
 from geometry_msgs.msg import Pose
 from sensor_msgs.msg import JointState
+from std_srvs.srv import Empty, Trigger
 
 from spherical_robots.msg import (FreebotState, MoveFreebotAction, MoveFreebotFeedback,
                                   MoveFreebotGoal, MoveFreebotResult)
@@ -318,11 +320,26 @@ class FreebotStackCheck(unittest.TestCase):
         acceleration = float(rospy.get_param(hardware + '/max_acceleration'))
         period = 1.0 / float(rospy.get_param(hardware + '/rate'))
         commands = Recorder('actuators/command', JointState)
+        # Time held, and stepped one step at a time until a wheel turns, so that freebot_ik falls
+        # silent mid-motion however far the loop would have run ahead of this node (an observer,
+        # which the loop does not wait for): on a busy machine the goal was once reached before
+        # the silence began.
+        lockstep = {name: rospy.ServiceProxy('lockstep/' + name, kind) for name, kind in
+                    (('pause', Empty), ('step_once', Trigger), ('resume', Empty))}
+        lockstep['pause']()
+        time.sleep(0.2)  # [s] of wall time: the held step's messages reach this node
+        count = self.actuators.count()
         self.goals.move(self.reachable)
-        wait_until(lambda: self.goals.feedback, 'freebot_ik to start moving (feedback)')
-        self.wait_moving()
+        for _ in range(500):
+            if any(abs(v) > 1.0 for m in self.actuators.since(count) for v in m.velocity):
+                break
+            self.assertTrue(lockstep['step_once']().success, 'lockstep/step_once refused')
+            time.sleep(0.02)  # [s] of wall time for the step's actuator state
+        else:
+            self.fail('no wheel faster than 1 rad/s after 500 single steps')
         speed = max(abs(v) for v in self.actuators.since(-1)[0].velocity)
         with silenced(rospy.resolve_name('freebot_ik')):
+            lockstep['resume']()
             wait_until(lambda: commands.count() > 0, 'a recorded command')
             last_command = commands.timed_since(0)[-1][0]
             wait_until(lambda: first_at_rest(self.actuators, last_command) is not None,
