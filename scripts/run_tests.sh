@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages, builds, and runs every gtest and rostest of the package
-# (colcon test, under a virtual X server; two tests at a time: in lock-step a stack's results do
-# not depend on how busy the machine is, and the replay tests share the display by a lock) and the
+# (colcon test, under a virtual X server; four tests at a time on two cores: a rostest spends much
+# of its time starting, joining and waiting, in lock-step a stack's results do not depend on how
+# busy the machine is, and the replay tests share the display by a lock) and the
 # fuzz targets for a fixed number of executions (scripts/fuzz.sh --short), then prints the summary.
 # Exit status: 0 only if at least one test ran, none failed and the fuzzing found nothing.
 set -euo pipefail
@@ -25,7 +26,7 @@ sr_step "run gtests and rostests (colcon test, xvfb-run)" \
   xvfb-run -a -s "-screen 0 1280x1024x24" \
   colcon test --base-paths . --build-base build --install-base install \
     --event-handlers console_cohesion+ --return-code-on-test-failure \
-    --ctest-args --timeout 900 -j2 \
+    --ctest-args --timeout 900 -j4 \
   || test_rc=$?
 
 # The libFuzzer targets, a fixed number of executions each, in their own clang build
