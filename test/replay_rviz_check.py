@@ -60,6 +60,9 @@ STARTUP_DEADLINE = 90.0     # [s] wall: rviz up and subscribed
 PASS_DEADLINE = 90.0        # [s] wall: reaching a given point of a pass of the bag
 MIN_CHANGED_PIXELS = 200    # between two shots 1 s apart
 MAX_RVIZ_RESTARTS = 2
+# [s] wall: a new /tf_static subscription connected and served by the latched publishers. 5 s
+# ran out once with four tests, rviz and two busy loops on two cores.
+LATCH_WAIT = 20.0
 MIN_ROBOT_PIXELS = 40       # robot-coloured pixels in its disc (terrain: ~15 px radius; 50-400)
 MIN_ROBOT_FRACTION = 0.5    # of its disc, against a plain background (measured: rotor 0.63, FreeBOT
                             # 0.93-0.95; half a radius off: 0.39 and 0.12-0.35)
@@ -435,7 +438,7 @@ class ReplayRvizCheck(unittest.TestCase):
             try:
                 wait_until(lambda: all_received() or self.jumps != jumps,
                            'every static transform of the bag %s on a new /tf_static '
-                           'subscription' % sorted(recorded), 5.0)
+                           'subscription' % sorted(recorded), LATCH_WAIT)
             finally:
                 subscriber.unregister()
             rospy.loginfo('%s: a late /tf_static subscriber got %s (attempt %d)', NAME,

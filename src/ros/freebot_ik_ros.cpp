@@ -56,7 +56,7 @@ FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 }
 
 void FreebotIkRos::onState(const ros::MessageEvent<spherical_robots::FreebotState const>& event) {
-  work_.arrived(event, state_sub_.getTopic());
+  work_.arrived(event);
 }
 
 void FreebotIkRos::drive(const spherical_robots::FreebotState& msg) {

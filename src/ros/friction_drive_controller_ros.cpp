@@ -38,7 +38,7 @@ FrictionDriveControllerRos::FrictionDriveControllerRos(ros::NodeHandle nh, ros::
 }
 
 void FrictionDriveControllerRos::onDriveCommand(const ros::MessageEvent<sensor_msgs::JointState const>& event) {
-  work_.arrived(event, command_sub_.getTopic());
+  work_.arrived(event);
 }
 
 void FrictionDriveControllerRos::convert(const sensor_msgs::JointState& msg) {

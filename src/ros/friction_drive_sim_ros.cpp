@@ -42,7 +42,7 @@ FrictionDriveSimRos::FrictionDriveSimRos(ros::NodeHandle nh, ros::NodeHandle pnh
 }
 
 void FrictionDriveSimRos::onActuatorState(const ros::MessageEvent<sensor_msgs::JointState const>& event) {
-  work_.arrived(event, state_sub_.getTopic());
+  work_.arrived(event);
 }
 
 void FrictionDriveSimRos::drive(const sensor_msgs::JointState& msg) {

@@ -191,7 +191,7 @@ void NormaControllerRos::onActuatorState(const ros::MessageEvent<sensor_msgs::Jo
 ros::Time NormaControllerRos::now() const { return workingTime(work_.participant()); }
 
 void NormaControllerRos::onJointStates(const ros::MessageEvent<sensor_msgs::JointState const>& event) {
-  work_.arrived(event, joint_sub_.getTopic());
+  work_.arrived(event);
 }
 
 void NormaControllerRos::onOdometry(const ros::MessageEvent<nav_msgs::Odometry const>& event) {

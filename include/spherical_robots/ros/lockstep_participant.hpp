@@ -124,6 +124,7 @@ class MessageDrivenWork {
   void join(ros::NodeHandle nh, const ros::NodeHandle& pnh,
             std::vector<ros::Subscriber> subscriptions) {
     if (!isLockstepParticipant(nh, pnh)) return;
+    topic_ = subscriptions.front().getTopic();
     participant_ = std::make_unique<LockstepParticipant>(
         nh, pnh, std::move(subscriptions), [this](const ros::Time& now) {
           LockstepParticipant::Done done;
@@ -136,16 +137,15 @@ class MessageDrivenWork {
         });
   }
   /// From the input's callback.
-  void arrived(const ros::MessageEvent<Message const>& event, const std::string& topic) {
+  void arrived(const ros::MessageEvent<Message const>& event) {
     const Message& message = *event.getConstMessage();
     if (!participant_) {
       handle_(message);
       publications_->take();
       return;
     }
-    topic_ = topic;
     latest_.keep(event.getPublisherName(), nanosecondsOf(message.header.stamp), message);
-    participant_->received(topic, event);
+    participant_->received(topic_, event);
   }
   /// Null outside lock-step (another input's callback reports its messages to it).
   LockstepParticipant* participant() const { return participant_.get(); }
@@ -153,7 +153,7 @@ class MessageDrivenWork {
  private:
   Handle handle_;
   StepPublications* publications_;
-  std::string topic_;  ///< the input's resolved name
+  std::string topic_;  ///< the input's resolved name (in lock-step)
   LatestPerPublisher<Message> latest_;
   std::unique_ptr<LockstepParticipant> participant_;
 };
