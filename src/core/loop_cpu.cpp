@@ -87,7 +87,12 @@ std::map<int, CpuTicks> readCpuTicks() {
   std::ifstream file("/proc/stat");
   std::stringstream text;
   text << file.rdbuf();
-  return file ? parseProcStat(text.str()) : std::map<int, CpuTicks>{};
+  if (!file) return {};
+  try {
+    return parseProcStat(text.str());
+  } catch (const std::invalid_argument&) {
+    return {};  // a kernel whose lines this does not know: no choice, rather than a dead plant
+  }
 }
 
 std::vector<int> allowedCpus() {

@@ -44,7 +44,7 @@ std::map<int, CpuTicks> parseProcStat(const std::string& text);
 int idlestCpu(const std::map<int, CpuTicks>& before, const std::map<int, CpuTicks>& after,
               const std::vector<int>& allowed);
 
-/// /proc/stat now; empty if it cannot be read.
+/// /proc/stat now; empty if it cannot be read or parsed (auto then chooses no CPU).
 std::map<int, CpuTicks> readCpuTicks();
 
 /// The CPUs this process may run on (sched_getaffinity), ascending.
