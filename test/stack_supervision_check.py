@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""A stack under scripts/run_stack.py, on a master of its own, with two busy loops beside it: how
-it ends (docs/conventions.md, "When a node dies").
+"""A stack under scripts/run_stack.py, on a master of its own, with two busy loops beside it (by
+default; --busy-loops): how it ends (docs/conventions.md, "When a node dies").
 
     stack_supervision_check.py --stack terrain                       # a normal end
     stack_supervision_check.py --stack terrain --kill pure_pursuit_controller [--respawn]
@@ -85,7 +85,8 @@ SETTLE_AFTER_RESTART = 3.0
 
 
 class Options:
-    stack, kill, respawn, pause, at, duration, args = 'terrain', None, False, False, 30.0, 120.0, []
+    stack, kill, respawn, pause, at, duration, busy_loops, args = (
+        'terrain', None, False, False, 30.0, 120.0, 2, [])
 
 
 def run_batch(duration):
@@ -112,7 +113,8 @@ class StackSupervision(unittest.TestCase):
         uri = 'http://localhost:%d' % port
         cls.home = tempfile.mkdtemp(prefix='stack_supervision_')
         env = dict(os.environ, ROS_MASTER_URI=uri, ROS_HOME=cls.home)
-        cls.busy = [subprocess.Popen(['yes'], stdout=subprocess.DEVNULL) for _ in range(2)]
+        cls.busy = [subprocess.Popen(['yes'], stdout=subprocess.DEVNULL)
+                    for _ in range(Options.busy_loops)]
         cls.log_path = os.path.join(cls.home, 'run_stack.log')
         log = open(cls.log_path, 'w')
         command = [RUN_STACK, '%s_stack.launch' % Options.stack,
@@ -295,6 +297,10 @@ def main(argv):
                         help='pause lock-step for the kill, resume once the node is back')
     parser.add_argument('--at', type=float, default=30.0, help='[s] simulated')
     parser.add_argument('--duration', type=float, default=120.0, help='[s] simulated')
+    parser.add_argument('--busy-loops', type=int, default=2,
+                        help='busy loops (yes) beside the stack; the rostests give 0: the suite '
+                             'is run beside busy loops as a whole (README), and two more in each of '
+                             'seven tests, four at a time, cost the suite about 50 s of CPU')
     parser.add_argument('args', nargs='*', help='launch arguments NAME:=VALUE')
     # rostest adds where rosunit writes its results, and roslaunch the node's __name:= and __log:=.
     # Not rospy.myargv(), which drops every NAME:=VALUE, the launch arguments too (before, this
@@ -303,7 +309,7 @@ def main(argv):
                                 if not a.startswith(('--gtest_output=', '__name:=', '__log:='))])
     Options.stack, Options.kill, Options.respawn = parsed.stack, parsed.kill, parsed.respawn
     Options.pause = parsed.pause
-    Options.at, Options.duration = parsed.at, parsed.duration
+    Options.at, Options.duration, Options.busy_loops = parsed.at, parsed.duration, parsed.busy_loops
     Options.args = parsed.args
     rosunit.unitrun(PKG, 'stack_supervision_%s' % Options.stack, StackSupervision)
 
