@@ -5,19 +5,36 @@ Private params: ~targets (list of [x, y, z, qw, qx, qy, qz] in ~frame, or [x, y,
 position only), ~frame (the chain's fixed base, <frame_prefix>link0; default link0), ~dwell [s]
 simulated between a verdict and the next target, ~loop (false).
 A client of freebot_ik's move_freebot action (spherical_robots/MoveFreebotAction): each target is
-a goal, and the next one waits for its result (arrived, unreachable, rejected or aborted).
+a goal, and the next one waits for its result (arrived, unreachable, rejected, preempted or
+aborted).
+
+In lock-step, listed in <ns>/lockstep/participants (the stack lists it before freebot_ik), it is a
+participant of the loop (docs/lockstep.md, "The FreeBOT stack's goals"): it sends a goal at a
+step, stamped with the step's time, which freebot_ik waits for and takes at that step, and it sees
+a result at its first request after the step freebot_ik published it at, so two runs send the
+same goals at the same steps. actionlib's clients stamp a goal with the node's clock, which lags
+the step, so this node speaks the action's two topics itself: MoveFreebotActionGoal on
+move_freebot/goal, with a goal id made of its name, the goal's number and the step's time, and
+MoveFreebotActionResult from move_freebot/result. Outside lock-step it looks every 0.05 s of ROS
+time.
 """
+import copy
+import math
+import threading
 import time
 
-import actionlib
 import rospy
 
-from spherical_robots.msg import MoveFreebotAction, MoveFreebotGoal
+from spherical_robots.msg import (LockstepAck, LockstepStep, MoveFreebotActionGoal,
+                                  MoveFreebotActionResult, MoveFreebotGoal)
+
+POLL = 0.05  # [s] simulated between looks at the results while a goal is out or waits
 
 
 def goal_of(target, frame):
-    if len(target) not in (3, 7):
-        raise ValueError('a target is [x, y, z] or [x, y, z, qw, qx, qy, qz], got %r' % (target,))
+    if len(target) not in (3, 7) or not all(math.isfinite(float(v)) for v in target):
+        raise ValueError('a target is [x, y, z] or [x, y, z, qw, qx, qy, qz] of finite numbers, '
+                         'got %r' % (target,))
     goal = MoveFreebotGoal()
     goal.target.header.frame_id = frame
     pose = goal.target.pose
@@ -28,32 +45,162 @@ def goal_of(target, frame):
     return goal
 
 
+class GoalSequence:
+
+    def __init__(self):
+        frame = rospy.get_param('~frame', 'link0')
+        self.goals = [goal_of(t, frame) for t in rospy.get_param('~targets')]
+        if not self.goals:
+            raise ValueError('parameter %s is empty' % rospy.resolve_name('~targets'))
+        self.dwell = float(rospy.get_param('~dwell', 2.0))
+        if not (math.isfinite(self.dwell) and self.dwell >= 0.0):
+            raise ValueError('parameter %s: %r is not a finite number >= 0'
+                             % (rospy.resolve_name('~dwell'), self.dwell))
+        self.loop = bool(rospy.get_param('~loop', False))
+        self.name = rospy.get_name()
+        self.lock = threading.Lock()
+        self.index = 0          # the target sent next
+        self.sent = 0           # goals sent so far
+        self.out = None         # the id of the goal sent whose result has not been taken
+        self.send_at = 0.0      # [s] the earliest time of the next goal
+        self.results = {}       # goal id -> MoveFreebotActionResult, of this node's goals
+        self.other_results = 0  # results of other clients' goals
+        self.goal_pub = rospy.Publisher('move_freebot/goal', MoveFreebotActionGoal, queue_size=10,
+                                        tcp_nodelay=True)
+        self.result_sub = rospy.Subscriber('move_freebot/result', MoveFreebotActionResult,
+                                           self.on_result, queue_size=100, tcp_nodelay=True)
+        participants = rospy.get_param('lockstep/participants', [])
+        self.lockstep = self.name in [rospy.names.ns_join(rospy.get_namespace(), name)
+                                      for name in participants]
+        if self.lockstep:
+            self.pending = None         # the stamp of the request not yet worked
+            self.result_listed = None   # the latest result stamp a request listed [ns]
+            self.awaiting = None        # other_results when a listed result began to be awaited
+            self.last_request_wall = None
+            self.ack_pub = rospy.Publisher('lockstep/ack', LockstepAck, queue_size=100,
+                                           tcp_nodelay=True)
+            rospy.Subscriber('~lockstep/step', LockstepStep, self.on_step, queue_size=100,
+                             tcp_nodelay=True)
+            threading.Thread(target=self.send_joins, daemon=True).start()
+        else:
+            rospy.Timer(rospy.Duration(POLL), self.on_timer)
+
+    def connected(self):
+        """freebot_ik reads the goals and publishes the results (the action server is up)."""
+        return self.goal_pub.get_num_connections() > 0 and self.result_sub.get_num_connections() > 0
+
+    # --- lock-step (docs/lockstep.md) -------------------------------------------------------------
+
+    def send_joins(self):
+        """Asks to join every 0.25 s of wall time, once connected for 1 s, until a request comes,
+        and again after 1 s without one."""
+        connected_since = None
+        while not rospy.is_shutdown():
+            time.sleep(0.25)
+            if not self.connected():
+                connected_since = None
+            elif connected_since is None:
+                connected_since = time.time()
+            with self.lock:
+                quiet = (self.last_request_wall is None
+                         or time.time() - self.last_request_wall > 1.0)
+            if quiet and connected_since is not None and time.time() - connected_since >= 1.0:
+                self.ack_pub.publish(LockstepAck(participant=self.name))
+
+    def on_step(self, request):
+        if request.participant != self.name:
+            return
+        with self.lock:
+            self.last_request_wall = time.time()
+            for topic, stamp in zip(request.inputs, request.input_stamps):
+                if topic == self.result_sub.resolved_name and (
+                        self.result_listed is None or stamp.to_nsec() > self.result_listed):
+                    # freebot_ik ended a goal at that step: this node's, while one is out
+                    self.result_listed = stamp.to_nsec()
+                    if self.out is not None:
+                        self.awaiting = self.other_results
+            self.pending = request.stamp
+            self.work_if_ready()
+
+    def work_if_ready(self):
+        """With the lock held: the pending step's work, once a listed result has come (this
+        goal's; another client's goal's result also ends the wait, that client having broken
+        repeatability anyway)."""
+        if self.pending is None:
+            return
+        ended = False
+        if self.awaiting is not None:
+            ended = self.out in self.results
+            if not ended and self.other_results == self.awaiting:
+                return
+            self.awaiting = None
+        stamp, self.pending = self.pending, None
+        published, next_time = self.work(stamp, ended)
+        self.ack_pub.publish(LockstepAck(stamp=stamp, participant=self.name, published=published,
+                                         next=next_time))
+
+    # --- both times -------------------------------------------------------------------------------
+
+    def on_result(self, msg):
+        with self.lock:
+            goal_id = msg.status.goal_id.id
+            if goal_id.startswith(self.name + '-'):
+                self.results[goal_id] = msg
+            else:
+                self.other_results += 1
+            if self.lockstep:
+                self.work_if_ready()
+
+    def on_timer(self, _event):
+        now = rospy.Time.now()
+        with self.lock:
+            if not now.is_zero() and self.connected():
+                self.work(now, self.out in self.results)
+
+    def work(self, stamp, ended):
+        """At step time `stamp`: takes the result of the goal out if `ended`, sends the next goal
+        when due. Returns the topics published and the time of the next look."""
+        t = stamp.to_sec()
+        if ended:
+            result = self.results.pop(self.out)
+            rospy.loginfo('target %d: %s', self.index + 1,
+                          result.result.message or result.status.text)
+            self.out = None
+            self.index += 1
+            self.send_at = t + self.dwell
+            if self.index == len(self.goals):
+                rospy.loginfo('all %d targets done', len(self.goals))
+                if self.loop:
+                    self.index = 0
+        published = []
+        if self.out is None and self.index < len(self.goals) and t >= self.send_at:
+            self.send(stamp)
+            published.append(self.goal_pub.resolved_name)
+        waits = self.out is None and self.index < len(self.goals)
+        next_time = min(self.send_at, t + POLL) if waits else t + POLL
+        return published, rospy.Time.from_sec(max(next_time, t))
+
+    def send(self, stamp):
+        self.sent += 1
+        msg = MoveFreebotActionGoal()
+        msg.header.stamp = msg.goal_id.stamp = stamp
+        msg.goal_id.id = '%s-%d-%d' % (self.name, self.sent, stamp.to_nsec())
+        msg.goal = copy.deepcopy(self.goals[self.index])
+        msg.goal.target.header.stamp = stamp
+        self.out = msg.goal_id.id
+        self.goal_pub.publish(msg)
+        rospy.loginfo('target %d of %d: %s', self.index + 1, len(self.goals),
+                      msg.goal.target.pose.position)
+
+
 def main():
     rospy.init_node('goal_sequence')
-    frame = rospy.get_param('~frame', 'link0')
-    goals = [goal_of(t, frame) for t in rospy.get_param('~targets')]
-    dwell = float(rospy.get_param('~dwell', 2.0))
-    loop = bool(rospy.get_param('~loop', False))
-    client = actionlib.SimpleActionClient('move_freebot', MoveFreebotAction)
-    while not rospy.is_shutdown() and rospy.Time.now().is_zero():
-        time.sleep(0.1)  # the plant's clock
-    client.wait_for_server()
-    while not rospy.is_shutdown():
-        for index, goal in enumerate(goals):
-            goal.target.header.stamp = rospy.Time.now()
-            client.send_goal(goal)
-            rospy.loginfo('target %d of %d: %s', index + 1, len(goals), goal.target.pose.position)
-            client.wait_for_result()
-            if rospy.is_shutdown():
-                return
-            result = client.get_result()
-            rospy.loginfo('target %d: %s', index + 1,
-                          result.message if result else client.get_goal_status_text())
-            rospy.sleep(dwell)
-        if not loop:
-            rospy.loginfo('all %d targets done', len(goals))
-            rospy.spin()
-            return
+    try:
+        GoalSequence()
+    except ValueError as error:
+        rospy.logfatal('goal_sequence: %s', error)
+        raise SystemExit(2)
+    rospy.spin()
 
 
 if __name__ == '__main__':

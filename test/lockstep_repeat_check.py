@@ -41,10 +41,12 @@ STACKS = {
                ('odom', 50.0), True),
     'rotor': ('rotor', ['odom', 'joint_states', 'actuators/command', 'actuators/state'],
               ('odom', 50.0), True),
+    # The goals too: the goal sequence is a participant and sends each at a step, stamped with it.
+    'freebot': ('freebot', ['freebot_state', 'actuators/command', 'actuators/state', 'ik_target',
+                            'move_freebot/goal'], ('freebot_state', 100.0), True),
 }
-# Not here: the FreeBOT stack is driven from outside the loop (freebot_goal_sequence.py), so when
-# its goals arrive depends on the machine. The rotor stack's planner starts its manoeuvre itself
-# (execute:=true, the default), at its first command period.
+# The rotor stack's planner starts its manoeuvre itself (execute:=true, the default), at its first
+# command period; the FreeBOT stack's goal sequence is a participant of the loop.
 
 
 def run_stack(stack, duration, extra_args, bag, busy_loops):
@@ -89,15 +91,17 @@ def messages(bag_path, topics):
 
 def transforms(bag_path, prefix):
     """The plant's /tf messages of the stack's frames (odom -> base_link, and base_link -> shell,
-    heading of the terrain robots; the ones between the robot's links come from
-    robot_state_publisher, an observer, which may drop joint_states it falls behind on), as
-    (child frame, stamp, translation, rotation)."""
+    heading of the terrain robots; FreeBOT's link<i> -> link<i+1>; the ones between a robot's
+    links come from robot_state_publisher, an observer, which may drop joint_states it falls
+    behind on), as (child frame, stamp, translation, rotation)."""
     plant_children = (prefix + 'shell', prefix + 'heading')
     out = []
     with rosbag.Bag(bag_path) as bag:
         for _, msg, _ in bag.read_messages(topics=['/tf']):
             for t in msg.transforms:
-                if t.header.frame_id == prefix + 'odom' or t.child_frame_id in plant_children:
+                if (t.header.frame_id in (prefix + 'odom', prefix + 'link0')
+                        or t.child_frame_id in plant_children
+                        or t.child_frame_id.startswith(prefix + 'link')):
                     tr, rot = t.transform.translation, t.transform.rotation
                     out.append((t.child_frame_id, t.header.stamp.to_nsec(),
                                 tr.x, tr.y, tr.z, rot.x, rot.y, rot.z, rot.w))

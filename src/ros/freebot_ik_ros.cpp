@@ -44,7 +44,10 @@ FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
   command_pub_ = step_publications_.advertise<sensor_msgs::JointState>(nh, "actuators/command");
   target_pub_ = nh.advertise<geometry_msgs::PoseStamped>("ik_target", 1, true);
   state_sub_ = nh.subscribe("freebot_state", kLoopQueueSize, &FreebotIkRos::onState, this);
-  work_.join(nh, pnh, {state_sub_});
+  goal_arrival_sub_ =
+      nh.subscribe("move_freebot/goal", kLoopQueueSize, &FreebotIkRos::onGoalArrival, this);
+  result_topic_ = nh.resolveName("move_freebot/result");
+  work_.join(nh, pnh, {state_sub_, goal_arrival_sub_});
   solve_server_ = nh.advertiseService("solve_ik", &FreebotIkRos::onSolve, this);
   updater_.setHardwareID("FreeBOT");
   updater_.add("freebot ik", this, &FreebotIkRos::diagnose);
@@ -58,6 +61,14 @@ FreebotIkRos::FreebotIkRos(ros::NodeHandle nh, ros::NodeHandle pnh)
 void FreebotIkRos::onState(const ros::MessageEvent<spherical_robots::FreebotState const>& event) {
   work_.arrived(event);
 }
+
+void FreebotIkRos::onGoalArrival(
+    const ros::MessageEvent<spherical_robots::MoveFreebotActionGoal const>& event) {
+  if (LockstepParticipant* participant = work_.participant())
+    participant->received(goal_arrival_sub_.getTopic(), event);
+}
+
+void FreebotIkRos::notePublishedResult() { step_publications_.note(result_topic_); }
 
 void FreebotIkRos::drive(const spherical_robots::FreebotState& msg) {
   const ros::Time now = msg.header.stamp;
@@ -115,6 +126,7 @@ void FreebotIkRos::takeGoals(const ros::Time& t) {
     verdict = executive_.accept(goalPose(goal->target), nanosecondsOf(t));
   } catch (const std::invalid_argument& e) {  // checked when it came: not expected
     goals_.reject(rejection(e.what()));
+    notePublishedResult();
     return;
   }
   goal_input_.accept(t);
@@ -146,6 +158,7 @@ void FreebotIkRos::follow(const freebot::GoalVerdict& verdict) {
     goals_.preempt(result);
   else
     goals_.abort(result);  // Unreachable, Aborted
+  notePublishedResult();
 }
 
 bool FreebotIkRos::onSolve(spherical_robots::SolveFreebotIk::Request& request,

@@ -11,11 +11,18 @@ LoopPublisher::LoopPublisher(ros::Publisher publisher,
                              std::shared_ptr<std::vector<std::string>> published)
     : publisher_(std::move(publisher)), published_(std::move(published)) {}
 
-void LoopPublisher::note() const {
-  const std::string topic = publisher_.getTopic();
-  if (std::find(published_->begin(), published_->end(), topic) == published_->end())
-    published_->push_back(topic);
+namespace {
+
+void noteOnce(std::vector<std::string>& published, const std::string& topic) {
+  if (std::find(published.begin(), published.end(), topic) == published.end())
+    published.push_back(topic);
 }
+
+}  // namespace
+
+void LoopPublisher::note() const { noteOnce(*published_, publisher_.getTopic()); }
+
+void StepPublications::note(const std::string& topic) { noteOnce(*published_, topic); }
 
 std::vector<std::string> StepPublications::take() {
   std::vector<std::string> topics;

@@ -44,6 +44,11 @@ class FreebotIkRos {
 
  private:
   void onState(const ros::MessageEvent<spherical_robots::FreebotState const>& event);
+  /// A goal the action server has just queued (its callback ran first): in lock-step, an input
+  /// of the step it is stamped with (docs/lockstep.md, "The FreeBOT stack's goals").
+  void onGoalArrival(const ros::MessageEvent<spherical_robots::MoveFreebotActionGoal const>& event);
+  /// In a step: an action result was published (listed in the step's acknowledgement).
+  void notePublishedResult();
   /// One executive step from one state (nothing for a rejected state): the goals' ends and
   /// starts, set-points, feedback and verdicts.
   void drive(const spherical_robots::FreebotState& msg);
@@ -79,6 +84,11 @@ class FreebotIkRos {
   LoopPublisher command_pub_;
   ros::Publisher target_pub_;
   SingleGoalServer<spherical_robots::MoveFreebotAction> goals_;  ///< move_freebot
+  /// move_freebot/goal once more, after the action server's own subscription: roscpp runs one
+  /// topic's callbacks of one queue in the order they were added, so the goal is queued by the
+  /// time the lock-step participant learns it came.
+  ros::Subscriber goal_arrival_sub_;
+  std::string result_topic_;  ///< move_freebot/result, resolved
   ros::ServiceServer solve_server_;
   diagnostic_updater::Updater updater_;
   ros::WallTimer diagnostics_timer_;  ///< reports on wall time (diagnostics_timer.hpp)

@@ -58,6 +58,9 @@ class StepPublications {
   LoopPublisher advertise(ros::NodeHandle& nh, const std::string& topic) {
     return {nh.advertise<Message>(topic, kLoopQueueSize), published_};
   }
+  /// A publication on resolved `topic` made by other means in this step (an actionlib server's
+  /// result), so that it is listed with the ones of advertise()'s publishers.
+  void note(const std::string& topic);
   /// The resolved topics published since the last call, in order of first publication.
   std::vector<std::string> take();
 
