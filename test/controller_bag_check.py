@@ -18,9 +18,10 @@ The tolerance of each sample follows from that:
                           recording, a little over the path's 0.1 m/s on the slopes);
   tracking error e_t [m]: the same, plus |P0_b - P0_a|, the distance between the contact points
                           the recorded controller used at the two ticks around t (the replayed one
-                          used a state between them), plus 2 s, s the largest step between
+                          used a state between them), plus 3 s, s the largest step between
                           consecutive recorded states near t (the replayed controller may not yet
-                          have read the newest state, or the one before, on a loaded machine);
+                          have read the newest state, or the two before, on a loaded machine:
+                          STALE_STATES);
   rates [rad/s]:          eq 55 (3R) moves with e_t by at most (n = |e|/(k_e + |e|), |dn/de| <= 1/k_e,
                           n |d zeta/de| <= 1/k_e, |d zeta/de| = 1/|e|; gains of config/terrain.yaml,
                           read from the parameter server):
@@ -58,6 +59,10 @@ TICK = 0.02            # [s] controller and plant publishing period
 MAX_GAP = 0.05         # [s] no interpolation across a longer gap between recorded messages
 APPROACH = 0.1         # [m] |e_t| above which zeta is well defined
 WALL_DEADLINE = 120.0  # [s]
+# How many 50 Hz states the replayed controller may lag behind on a loaded machine: it runs on
+# timers against rosbag's clock, not in lock-step. Two were exceeded once (1.06 of the e_t
+# tolerance) with the suite's heaviest tests and their busy loops started beside it.
+STALE_STATES = 3
 
 
 def vec(v):
@@ -178,7 +183,7 @@ class ControllerBagRegression(unittest.TestCase):
         near = (self.state_times[1:] >= t0 - 3 * TICK) & (self.state_times[:-1] <= t1 + TICK)
         step = self.state_steps[near].max() if near.any() else self.state_steps.max()
         tol_desired = self.v_desired * self.start_offset + 1e-4
-        tol_error = tol_desired + np.linalg.norm(used_b - used_a) + 2.0 * step
+        tol_error = tol_desired + np.linalg.norm(used_b - used_a) + STALE_STATES * step
         norm = np.linalg.norm(self.recorded_errors.at(t)[:3])
         return tol_desired, tol_error, norm
 
