@@ -332,6 +332,7 @@ DOMAINS = {
     'dir': Pattern(r'^[^\s]+$', 'a directory (no blanks)'),
     'compression': Choice('none', 'lz4', 'bz2'),
     'respawn_rviz': BOOLEAN,
+    'rviz_frame_rate': Optional(Number(above=0, unit='frames/s')),
     'loop': BOOLEAN,
     'rate': Number(above=0),
     'start': Number(minimum=0, unit='s'),
