@@ -125,17 +125,16 @@ class GoalSequence:
     def work_if_ready(self):
         """With the lock held: the pending step's work, once a listed result has come (this
         goal's; another client's goal's result also ends the wait, that client having broken
-        repeatability anyway)."""
+        repeatability anyway). A result of this node's goal that no request lists (freebot_ik
+        rejected it on arrival, outside a step: a bad ~frame) is taken at the next step too."""
         if self.pending is None:
             return
-        ended = False
-        if self.awaiting is not None:
-            ended = self.out in self.results
-            if not ended and self.other_results == self.awaiting:
-                return
-            self.awaiting = None
+        if (self.awaiting is not None and self.out not in self.results
+                and self.other_results == self.awaiting):
+            return
+        self.awaiting = None
         stamp, self.pending = self.pending, None
-        published, next_time = self.work(stamp, ended)
+        published, next_time = self.work(stamp, self.out in self.results)
         self.ack_pub.publish(LockstepAck(stamp=stamp, participant=self.name, published=published,
                                          next=next_time))
 
