@@ -300,7 +300,7 @@ def main(argv):
     parser.add_argument('--busy-loops', type=int, default=2,
                         help='busy loops (yes) beside the stack; the rostests give 0: the suite '
                              'is run beside busy loops as a whole (README), and two more in each of '
-                             'seven tests, four at a time, cost the suite about 50 s of CPU')
+                             'eight tests, four at a time, cost the suite about 50 s of CPU')
     parser.add_argument('args', nargs='*', help='launch arguments NAME:=VALUE')
     # rostest adds where rosunit writes its results, and roslaunch the node's __name:= and __log:=.
     # Not rospy.myargv(), which drops every NAME:=VALUE, the launch arguments too (before, this
