@@ -40,7 +40,7 @@ sr_log "${summary:-Summary: no test results found}   (ROS logs: $ROS_HOME/log)"
 sr_log "total $((SECONDS - total_start)) s"
 
 counts=$(echo "$summary" |
-  sed -nE 's/^Summary: ([0-9]+) tests, ([0-9]+) errors, ([0-9]+) failures, ([0-9]+) skipped.*/\1 \2 \3 \4/p')
+  sed -nE 's/^Summary: ([0-9]+) tests, ([0-9]+) errors?, ([0-9]+) failures?, ([0-9]+) skipped.*/\1 \2 \3 \4/p')
 read -r ran errors failures skipped <<< "${counts:-0 0 0 0}"
 if [ "$ran" -eq 0 ]; then
   sr_log "FAILED: no tests ran"; exit 1

@@ -975,13 +975,18 @@ class OdometryFeedbackCheck(StackFixture):
         import rosgraph
         controller = rospy.resolve_name('pure_pursuit_controller')
         odom_topic = rospy.resolve_name(rospy.get_param('~odom_topic', 'odom'))
+        source = rospy.get_param('~odom_source', None)
+        if source is not None:
+            # topic_tools' relay advertises its output only with its first message
+            master = rosgraph.Master(NAME)
+            testing.wait_until(lambda: odom_topic in dict(master.getSystemState()[0]),
+                               'a publisher of ' + odom_topic, 30.0)
         publishers, subscribers, _ = rosgraph.Master(NAME).getSystemState()
         read = sorted(topic for topic, nodes in subscribers if controller in nodes)
         types = dict(rosgraph.Master(NAME).getTopicTypes())
         rospy.loginfo('%s reads %s', controller, read)
         self.assertIn(odom_topic, read)
         self.assertEqual(types.get(odom_topic), 'nav_msgs/Odometry')
-        source = rospy.get_param('~odom_source', None)
         if source is not None:
             self.assertEqual(dict(publishers)[odom_topic], [rospy.resolve_name(source)])
         if rospy.get_param('pure_pursuit_controller/robot_type') == 'RS':
