@@ -120,8 +120,6 @@ class StackSupervision(unittest.TestCase):
         command = [RUN_STACK, '%s_stack.launch' % Options.stack,
                    'duration:=%g' % Options.duration,
                    'respawn:=%s' % ('true' if Options.respawn else 'false')] + Options.args
-        if Options.kill and Options.respawn:
-            command.append('record:=' + os.path.join(cls.home, 'run.bag'))
         start = time.time()
         cls.child = subprocess.Popen(command, env=env, stdout=log, stderr=subprocess.STDOUT,
                                      start_new_session=True)
@@ -139,7 +137,7 @@ class StackSupervision(unittest.TestCase):
                 clock = cls.clock
                 rospy.Subscriber('/clock', Clock, lambda m: clock.append(m.clock.to_sec()),
                                  queue_size=100000)
-                # Its own subscription, not the bag: rosbag record, which keeps 100 messages per
+                # Its own subscription, not a bag: rosbag record, which keeps 100 messages per
                 # topic, lost a third of them on this loaded machine.
                 if Options.stack == 'norma':
                     rospy.Subscriber('/%s/odom' % ns, Odometry, lambda m: cls.tracking.append(

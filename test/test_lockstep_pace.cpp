@@ -31,11 +31,47 @@ TEST(LockstepPace, CapHoldsTheStepUntilItsWallTime) {
   LockstepPace pace(0.001, 10.0);
   EXPECT_EQ(pace.delayBefore(5 * kMs, 50.0), 0.0);  // before the first step: nothing to pace by
   pace.started(5 * kMs, 50.0);
-  pace.started(7 * kMs, 51.0);  // only the first step anchors the pace
+  pace.started(7 * kMs, 50.0002);  // on the schedule: the first step stays the anchor
   EXPECT_NEAR(*pace.delayBefore(1005 * kMs, 50.04), 0.06, 1e-12);
   EXPECT_EQ(*pace.delayBefore(1005 * kMs, 50.2), 0.0);
   pace.started(1005 * kMs, 50.1);
   EXPECT_NEAR(pace.realTimeFactor(1005 * kMs, 50.1), 10.0, 1e-9);
+}
+
+// A timer firing late (50 ms behind the schedule at 10x) is made up: the steps after it start at
+// once until the loop is back on the schedule of the first step.
+TEST(LockstepPace, MakesUpALagUpToMaxLag) {
+  LockstepPace pace(0.01, 10.0);
+  pace.started(0, 0.0);
+  pace.started(10 * kMs, 0.051);  // due at 0.001: 0.05 s late, within kMaxLag
+  EXPECT_EQ(*pace.delayBefore(20 * kMs, 0.051), 0.0);
+  EXPECT_NEAR(*pace.delayBefore(600 * kMs, 0.051), 0.009, 1e-12);  // due at 0.06
+}
+
+// 2 s of wall time waiting for a participant that fell silent (dropped after its timeout): the cap
+// counts afresh from the step after the wait instead of making up 20 s of simulated time at full
+// speed (the terrain stack at 10x did: its respawned controller rejoined 19 s later).
+TEST(LockstepPace, DoesNotRaceAfterAStall) {
+  LockstepPace pace(0.01, 10.0);
+  pace.started(0, 0.0);
+  pace.started(10 * kMs, 2.0);
+  EXPECT_NEAR(*pace.delayBefore(20 * kMs, 2.0), 0.001, 1e-12);
+  EXPECT_NEAR(*pace.delayBefore(1010 * kMs, 2.05), 0.05, 1e-12);  // 1 s on: 0.1 s after 2.0
+  EXPECT_NEAR(pace.realTimeFactor(1010 * kMs, 2.1), 1.01 / 2.1, 1e-12)
+      << "the run's figure still counts from its first step";
+}
+
+// A pause is not made up after the resume either: 30 s paused at 10x would be 300 s at full speed.
+TEST(LockstepPace, DoesNotRaceAfterAResume) {
+  LockstepPace pace(0.01, 10.0);
+  pace.started(0, 0.0);
+  pace.started(10 * kMs, 0.001);
+  pace.pause();
+  EXPECT_FALSE(pace.delayBefore(20 * kMs, 15.0));
+  pace.resume();
+  EXPECT_EQ(*pace.delayBefore(20 * kMs, 30.0), 0.0);  // the first step after the resume: at once
+  pace.started(20 * kMs, 30.0);
+  EXPECT_NEAR(*pace.delayBefore(30 * kMs, 30.0), 0.001, 1e-12);
 }
 
 TEST(LockstepPace, PausedStepsOnlyWhenAskedOnce) {

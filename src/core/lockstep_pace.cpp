@@ -31,17 +31,26 @@ std::optional<double> LockstepPace::delayBefore(std::int64_t step, double wall) 
     if (single_steps_ == 0) return std::nullopt;
     --single_steps_;
   }
-  if (speedup_ == 0.0 || !first_step_) return 0.0;
-  // The step at t is due t - t0 of simulated time after the first, divided by the cap.
-  const double due = 1e-9 * static_cast<double>(step - *first_step_) / speedup_;
-  const double ahead = due - (wall - first_wall_);
+  if (speedup_ == 0.0 || !anchor_step_) return 0.0;
+  const double ahead = dueAfterAnchor(step) - (wall - anchor_wall_);
   return ahead > 0.0 ? ahead : 0.0;
 }
 
+double LockstepPace::dueAfterAnchor(std::int64_t step) const {
+  // The step at t is due t - t_anchor of simulated time after the anchor, divided by the cap.
+  return 1e-9 * static_cast<double>(step - *anchor_step_) / speedup_;
+}
+
 void LockstepPace::started(std::int64_t step, double wall) {
-  if (first_step_) return;
-  first_step_ = step;
-  first_wall_ = wall;
+  if (!first_step_) {
+    first_step_ = step;
+    first_wall_ = wall;
+  }
+  if (speedup_ == 0.0) return;
+  if (!anchor_step_ || wall - anchor_wall_ - dueAfterAnchor(step) > kMaxLag) {
+    anchor_step_ = step;
+    anchor_wall_ = wall;
+  }
 }
 
 void LockstepPace::pause() {
@@ -49,7 +58,10 @@ void LockstepPace::pause() {
   single_steps_ = 0;
 }
 
-void LockstepPace::resume() { paused_ = false; }
+void LockstepPace::resume() {
+  paused_ = false;
+  anchor_step_.reset();
+}
 
 std::string LockstepPace::stepOnce() {
   if (!paused_) return "not paused: call lockstep/pause first";

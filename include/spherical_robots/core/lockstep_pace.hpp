@@ -1,8 +1,14 @@
 #pragma once
 // When a lock-step clock may take its next step (docs/lockstep.md, "Pace"), with time as numbers
-// and no ROS: the cap of `speedup` times real time, measured from the first step, and the pause,
-// resume and single-step services. Simulated step times are integer nanoseconds; wall time, which
-// only paces, is seconds.
+// and no ROS: the cap of `speedup` times real time, and the pause, resume and single-step
+// services. Simulated step times are integer nanoseconds; wall time, which only paces, is seconds.
+//
+// The cap counts from an anchor step: the first, and again the first after a resume or after the
+// loop fell more than kMaxLag of wall time behind the cap's schedule (a participant silent until
+// dropped, a descheduled plant). Up to kMaxLag the loop makes up lost time, so the average pace
+// stays at the cap despite a late timer; beyond it, it does not race: without a new anchor, 2 s
+// of wall time waiting for a silent participant at 10x would be made up by 20 s of simulated
+// time at full speed.
 
 #include <cstdint>
 #include <optional>
@@ -23,10 +29,15 @@ class LockstepPace {
   /// The wall time [s] to wait before the step at `step` [ns] may start, at wall time `wall`
   /// [s]: 0 now, nullopt while paused (a single step asked for is consumed here).
   std::optional<double> delayBefore(std::int64_t step, double wall);
-  /// The step at `step` [ns] started at wall time `wall` [s]; the first one anchors the pace.
+  /// The step at `step` [ns] started at wall time `wall` [s]; it anchors the pace if it is the
+  /// first, the first after a resume, or more than kMaxLag behind the schedule.
   void started(std::int64_t step, double wall);
 
+  /// [s] of wall time the loop may fall behind the cap's schedule and still make up.
+  static constexpr double kMaxLag = 0.1;
+
   void pause();
+  /// Ends a pause; the next step anchors the pace, so the paused time is not made up.
   void resume();
   /// Allows one step while paused. @return the reason it is refused ("" if allowed): not paused.
   std::string stepOnce();
@@ -45,8 +56,13 @@ class LockstepPace {
   double speedup_;
   bool paused_ = false;
   int single_steps_ = 0;
-  std::optional<std::int64_t> first_step_;
+  /// Seconds of wall time after the anchor that the step at `step` [ns] is due.
+  double dueAfterAnchor(std::int64_t step) const;
+
+  std::optional<std::int64_t> first_step_;  // the real-time factor counts from the first step
   double first_wall_ = 0.0;
+  std::optional<std::int64_t> anchor_step_;  // the cap counts from the anchor
+  double anchor_wall_ = 0.0;
   std::optional<double> finished_wall_;
 };
 
