@@ -5,10 +5,11 @@
 // where two glibc calls reduce the argument twice and cannot be inlined. No ROS.
 //
 // x = k pi/64 + r, |r| <= pi/128: sin and cos of k pi/64 from a table of the 33 sines of a
-// quarter turn (the cosines by symmetry, the other quarters by sign), those of r from Taylor
-// polynomials of degree 7 and 6, and the angle-sum formulas. About 70 instructions for both,
-// where fdlibm's reduction to pi/4 and its two kernels of degree 13 and 14 took about 105; the
-// terrain closed loop evaluates 4.5 of these per RK stage, at some 1,200 instructions a stage.
+// quarter turn (the cosines by symmetry, the other quarters by swapping the two and their
+// signs), those of r from Taylor polynomials of degree 7 and 6, and the angle-sum formulas.
+// About 70 instructions for both, where fdlibm's reduction to pi/4 and its two kernels of degree
+// 13 and 14 took about 105; the terrain closed loop evaluates 4.5 of these per RK stage, at some
+// 1,200 instructions a stage.
 
 #include <cmath>
 
@@ -61,7 +62,8 @@ inline SinCos sinCos(double x) {
   const int k = static_cast<int>(magnitude * kSixtyFourOverPi + 0.5);
   const double fk = k;
   const double r = (magnitude - fk * kPiOver64Head) - fk * kPiOver64Tail;
-  // Taylor to r^7 and r^6: the next terms are below 4e-19 of the result for |r| <= pi/128.
+  // Taylor to r^7 and r^6: for |r| <= pi/128 the next terms, r^9/9! and r^8/8!, are below
+// 4e-19 of sin r and 4e-18 of cos r.
   const double z = r * r;
   const double sin_r = r + r * z * (-1.0 / 6.0 + z * (1.0 / 120.0 - z * (1.0 / 5040.0)));
   const double cos_r_minus_1 = z * (-0.5 + z * (1.0 / 24.0 - z * (1.0 / 720.0)));
