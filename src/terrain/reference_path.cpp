@@ -34,10 +34,23 @@ PathPoint CirclePath::at(double t) const {
   return point;
 }
 
+double CirclePath::meanVelocityFactor(double window) const {
+  const double half_turn = 0.5 * angular_rate_ * window;
+  return std::sin(half_turn) / half_turn;
+}
+
 Eigen::Vector2d CirclePath::meanVelocity(double t, double window) const {
   requirePositive(window, "circle path: mean velocity window [s]");
-  const double half_turn = 0.5 * angular_rate_ * window;
-  return at(t).velocity * (std::sin(half_turn) / half_turn);
+  return at(t).velocity * meanVelocityFactor(window);
+}
+
+// One sincos for a window centred on t (the smooth law's for 3R and 2R), not one for the
+// position and one for the mean velocity.
+PathPoint CirclePath::windowedAt(double t, const VelocityWindow& window) const {
+  PathPoint point = at(t);
+  if (window.lead > 0.0) point.velocity = at(t + window.lead).velocity;
+  if (window.length > 0.0) point.velocity *= meanVelocityFactor(window.length);
+  return point;
 }
 
 double CirclePath::duration() const { return 2.0 * M_PI / std::abs(angular_rate_); }
@@ -99,6 +112,16 @@ Eigen::Vector2d ReferencePath::meanVelocity(double t, double window) const {
   return (position(t + 0.5 * window) - position(t - 0.5 * window)) / window;
 }
 
+PathPoint ReferencePath::windowedAt(double t, const VelocityWindow& window) const {
+  PathPoint point = at(t);
+  if (window.length > 0.0) {
+    point.velocity = meanVelocity(t + window.lead, window.length);
+  } else if (window.lead > 0.0) {
+    point.velocity = velocity(t + window.lead);
+  }
+  return point;
+}
+
 DesiredPoint liftOntoSurface(const ReferencePath& path, const Surface& surface, double t,
                              const VelocityWindow& window) {
   if (!std::isfinite(window.lead) || window.lead < 0.0) {
@@ -107,12 +130,9 @@ DesiredPoint liftOntoSurface(const ReferencePath& path, const Surface& surface, 
   if (!std::isfinite(window.length) || window.length < 0.0) {
     rejectNumber(window.length, "reference path: velocity window length [s]", "finite and >= 0");
   }
-  const PathPoint planar = path.at(t);
+  const PathPoint planar = path.windowedAt(t, window);
   const Eigen::Vector2d& xy = planar.position;
-  const Eigen::Vector2d xy_rate =
-      window.length > 0.0 ? path.meanVelocity(t + window.lead, window.length)
-      : window.lead > 0.0 ? path.velocity(t + window.lead)
-                          : planar.velocity;
+  const Eigen::Vector2d& xy_rate = planar.velocity;
   const SurfacePoint ground = surface.evaluate(xy.x(), xy.y());
   DesiredPoint desired;
   desired.position = {xy.x(), xy.y(), ground.height};

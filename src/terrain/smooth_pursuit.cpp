@@ -73,7 +73,7 @@ SmoothPursuitController::SmoothPursuitController(RobotType type, const SmoothPur
 
 // Linear in e_t near p_d (stiffer along the path, where only the speed responds, than across,
 // where types that must turn respond through their heading), never faster than v_c far from it.
-Eigen::Vector3d SmoothPursuitController::desiredVelocity(
+SmoothPursuitController::Correction SmoothPursuitController::correction(
     const TrackingError& error, const Eigen::Vector3d& desired_velocity) const {
   const Eigen::Vector3d along =
       desired_velocity *
@@ -81,8 +81,13 @@ Eigen::Vector3d SmoothPursuitController::desiredVelocity(
   const Eigen::Vector3d linear = gains_.cross_gain * error.error +
                                  (gains_.along_gain - gains_.cross_gain) *
                                      error.error.dot(along) * along;
-  return desired_velocity +
-         (gains_.approach_speed / (gains_.approach_speed + linear.norm())) * linear;
+  return {linear, gains_.approach_speed / (gains_.approach_speed + linear.norm())};
+}
+
+Eigen::Vector3d SmoothPursuitController::desiredVelocity(
+    const TrackingError& error, const Eigen::Vector3d& desired_velocity) const {
+  const Correction c = correction(error, desired_velocity);
+  return desired_velocity + c.scale * c.linear;
 }
 
 DriveRates SmoothPursuitController::command(const ContactGeometry& geometry, double tilt,
@@ -92,10 +97,12 @@ DriveRates SmoothPursuitController::command(const ContactGeometry& geometry, dou
       !std::isfinite(tilt)) {
     rejectInput(tilt, error, desired_velocity);
   }
-  const Eigen::Vector3d velocity = desiredVelocity(error, desired_velocity);
-  // The robot moves in the tangent plane: u's components along h and l.
-  const double forward = velocity.dot(geometry.heading_frame.col(0));
-  const double leftward = velocity.dot(geometry.heading_frame.col(1));
+  // The robot moves in the tangent plane: u's components along h and l, u = w + scale k.
+  const Correction c = correction(error, desired_velocity);
+  const Eigen::Vector3d& h = geometry.heading_frame.col(0);
+  const Eigen::Vector3d& l = geometry.heading_frame.col(1);
+  const double forward = desired_velocity.dot(h) + c.scale * c.linear.dot(h);
+  const double leftward = desired_velocity.dot(l) + c.scale * c.linear.dot(l);
   // |u| in the plane, regularised: u's direction means nothing where |u| < v_e.
   const double speed =
       std::sqrt(forward * forward + leftward * leftward + gains_.min_speed * gains_.min_speed);

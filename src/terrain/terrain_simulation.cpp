@@ -33,6 +33,7 @@ TerrainSimulation::TerrainSimulation(const TerrainKinematics& kinematics,
                                      const PursuitController& controller,
                                      const ReferencePath& path, const TerrainState& initial)
     : kinematics_(kinematics), controller_(controller), path_(path),
+      velocity_window_(controller.velocityWindow()), reads_zeta_(controller.readsZeta()),
       state_(kinematics.constrain(initial)) {
   if (controller.type() != kinematics.type()) {
     throw std::invalid_argument("controller is for robot type " + toString(controller.type()) +
@@ -63,7 +64,7 @@ const DesiredPoint& TerrainSimulation::desiredAt(double t) const {
   desired_cache_used_ = std::min(desired_cache_used_ + 1, desired_cache_.size());
   auto& slot = desired_cache_[desired_cache_next_];
   desired_cache_next_ = (desired_cache_next_ + 1) % desired_cache_.size();
-  slot = {t, liftOntoSurface(path_, kinematics_.surface(), t, controller_.velocityWindow())};
+  slot = {t, liftOntoSurface(path_, kinematics_.surface(), t, velocity_window_)};
   return slot.second;
 }
 
@@ -76,7 +77,7 @@ void TerrainSimulation::step(double dt) {
     const ContactGeometry geometry = kinematics_.geometry(state);
     const DesiredPoint& desired = desiredAt(t);
     const DriveRates rates = realisedCommand(
-        state, geometry, trackingError(geometry, desired.position, controller_.readsZeta()),
+        state, geometry, trackingError(geometry, desired.position, reads_zeta_),
         desired);
     dxdt = toOde(kinematics_.realisedStateRate(state, geometry, rates));
   };

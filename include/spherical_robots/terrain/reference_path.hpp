@@ -16,6 +16,13 @@ struct PathPoint {
   Eigen::Vector2d velocity = Eigen::Vector2d::Zero();  ///< (x_d', y_d') [m/s]
 };
 
+/// Which velocity of the reference a law wants: its mean over [t + lead - length/2,
+/// t + lead + length/2] [s]; {0, 0} is p_d'(t) itself.
+struct VelocityWindow {
+  double lead = 0.0;    ///< [s] >= 0: how far ahead of t the window is centred
+  double length = 0.0;  ///< [s] >= 0
+};
+
 /// A planar reference (x_d(t), y_d(t)) [m] and its velocity [m/s].
 class ReferencePath {
  public:
@@ -28,6 +35,11 @@ class ReferencePath {
   /// The mean velocity [m/s] over [t - window/2, t + window/2], window [s] > 0: the chord
   /// (position(t + window/2) - position(t - window/2)) / window.
   virtual Eigen::Vector2d meanVelocity(double t, double window) const;
+  /// The position at t with the velocity over window (a length of 0: at t + lead itself), as
+  /// liftOntoSurface lifts them; the window is not checked. A path whose mean velocity comes
+  /// from its state at one time overrides this to evaluate t once (the closed loop asks at every
+  /// new RK stage time).
+  virtual PathPoint windowedAt(double t, const VelocityWindow& window) const;
   /// The span [s] desired_path shows: one lap of a path that repeats (it repeats after that),
   /// the whole of one that ends.
   virtual double duration() const = 0;
@@ -42,10 +54,14 @@ class CirclePath final : public ReferencePath {
   PathPoint at(double t) const override;
   /// Closed form: velocity(t) sin(w window/2) / (w window/2).
   Eigen::Vector2d meanVelocity(double t, double window) const override;
+  PathPoint windowedAt(double t, const VelocityWindow& window) const override;
   double duration() const override;
   std::string describe() const override;
 
  private:
+  /// sin(w window/2) / (w window/2): the mean velocity over window [s] > 0 over the velocity.
+  double meanVelocityFactor(double window) const;
+
   double radius_;
   double angular_rate_;
 };
@@ -63,13 +79,6 @@ class DiamondPath final : public ReferencePath {
  private:
   double half_diagonal_;
   double speed_;
-};
-
-/// Which velocity of the reference a law wants: its mean over [t + lead - length/2,
-/// t + lead + length/2] [s]; {0, 0} is p_d'(t) itself.
-struct VelocityWindow {
-  double lead = 0.0;    ///< [s] >= 0: how far ahead of t the window is centred
-  double length = 0.0;  ///< [s] >= 0
 };
 
 /// A desired point on the terrain and its 3D velocity.

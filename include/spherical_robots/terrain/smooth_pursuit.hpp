@@ -66,6 +66,14 @@ class SmoothPursuitController final : public PursuitController {
                      const Eigen::Vector3d& desired_velocity) const override;
 
  private:
+  /// c = scale * linear (desiredVelocity's) in its two factors: command() projects linear onto
+  /// the heading frame while scale's square root and division, the slow part, are under way.
+  struct Correction {
+    Eigen::Vector3d linear;  ///< k [m/s]
+    double scale;            ///< v_c / (v_c + |k|) [-]
+  };
+  Correction correction(const TrackingError& error, const Eigen::Vector3d& desired_velocity) const;
+
   RobotType type_;
   SmoothPursuitGains gains_;
   // Constants of command(), which runs at every RK stage: a multiplication, not a division or sin.

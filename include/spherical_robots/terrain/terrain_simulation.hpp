@@ -52,6 +52,9 @@ class TerrainSimulation {
   const TerrainKinematics& kinematics_;
   const PursuitController& controller_;
   const ReferencePath& path_;
+  // The controller's constants, read once instead of by a virtual call at every RK stage.
+  VelocityWindow velocity_window_;
+  bool reads_zeta_;
   TerrainState state_;
   double t_ = 0.0;
   double t_compensation_ = 0.0;  ///< Kahan: 40,000 steps of 5 ms end at exactly 200 s
