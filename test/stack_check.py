@@ -208,7 +208,6 @@ class StackFixture(unittest.TestCase):
 class TrackingCheck(StackFixture):
     """mode:=tracking: the 3R robot follows the radius-2 circle on the eq 59 terrain."""
 
-
     def test_01_odometry(self):
         """REP 105: pose of base_link in odom, gravity-aligned; twist in base_link, so that the
         twist turned into odom, averaged over two messages, is the motion between them;
@@ -244,13 +243,13 @@ class TrackingCheck(StackFixture):
         # map -> odom (static) -> base_link -> shell (-> marker_link: robot_state_publisher), heading
         for child in ('odom', 'base_link', 'shell', 'heading', 'marker_link'):
             transform = tf.lookup_transform('map', self.prefix + child, rospy.Time(0),
-                                                        rospy.Duration(10.0))
+                                            rospy.Duration(10.0))
             t = transform.transform.translation
             self.assertTrue(all(math.isfinite(v) for v in (t.x, t.y, t.z)), child)
         # The shell's centre is base_link's; the heading frame sits at the contact point, base_link
         # R above it along the normal.
         shell = tf.lookup_transform(self.prefix + 'base_link', self.prefix + 'shell',
-                                                rospy.Time(0)).transform.translation
+                                    rospy.Time(0)).transform.translation
         self.assertEqual((shell.x, shell.y, shell.z), (0.0, 0.0, 0.0))
         base = tf.lookup_transform('map', self.prefix + 'base_link', rospy.Time(0))
         heading = tf.lookup_transform('map', self.prefix + 'heading', rospy.Time(0))
@@ -603,12 +602,11 @@ class NormaCheck(StackFixture):
         for joint, coordinate in zip((0, 1, 2, 3), (2, 0, 1, 3)):
             self.assertAlmostEqual(msg.position[joint], state.q[coordinate], delta=0.05)
         for child in ('odom', 'base_link', 'tilt_link', 'shell_link', 'pendulum_link', 'slider_link'):
-            transform = tf.lookup_transform('map', self.prefix + child,
-                                                        rospy.Time(0), rospy.Duration(10.0))
+            transform = tf.lookup_transform('map', self.prefix + child, rospy.Time(0),
+                                            rospy.Duration(10.0))
             t = transform.transform.translation
             self.assertTrue(all(math.isfinite(v) for v in (t.x, t.y, t.z)), child)
-        base = tf.lookup_transform(self.prefix + 'odom', self.prefix + 'base_link',
-                                               rospy.Time(0))
+        base = tf.lookup_transform(self.prefix + 'odom', self.prefix + 'base_link', rospy.Time(0))
         self.assertAlmostEqual(base.transform.translation.z, self.radius, delta=1e-9)
         # REP 105: odom's pose in <prefix>odom, gravity-aligned, its twist in base_link: eqs 6
         # and 12 turned into {F_l}, forward R theta' cos(phi), leftward -R phi', of the state
