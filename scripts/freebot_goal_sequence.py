@@ -17,6 +17,10 @@ the step, so this node speaks the action's two topics itself: MoveFreebotActionG
 move_freebot/goal, with a goal id made of its name, the goal's number and the step's time, and
 MoveFreebotActionResult from move_freebot/result. Outside lock-step it looks every 0.05 s of ROS
 time.
+
+A goal out when freebot_ik dies (killed, crashed) dies with it: the freebot_ik that roslaunch
+restarts (respawn:=true) has never heard of it, and its result would never come. This node sends
+that target again once the new freebot_ik has been connected for 1 s of wall time.
 """
 import copy
 import math
@@ -63,8 +67,10 @@ class GoalSequence:
         self.sent = 0           # goals sent so far
         self.out = None         # the id of the goal sent whose result has not been taken
         self.send_at = 0.0      # [s] the earliest time of the next goal
-        self.results = {}       # goal id -> MoveFreebotActionResult, of this node's goals
-        self.other_results = 0  # results of other clients' goals
+        self.result = None      # the MoveFreebotActionResult of the goal out
+        self.other_results = 0  # results of other goals: other clients', this node's lost ones
+        self.connected_since = None  # [s] of wall time, while freebot_ik is connected
+        self.goal_lost = False  # freebot_ik went away while a goal was out
         self.goal_pub = rospy.Publisher('move_freebot/goal', MoveFreebotActionGoal, queue_size=10,
                                         tcp_nodelay=True)
         self.result_sub = rospy.Subscriber('move_freebot/result', MoveFreebotActionResult,
@@ -81,31 +87,37 @@ class GoalSequence:
                                            tcp_nodelay=True)
             rospy.Subscriber('~lockstep/step', LockstepStep, self.on_step, queue_size=100,
                              tcp_nodelay=True)
-            threading.Thread(target=self.send_joins, daemon=True).start()
         else:
             rospy.Timer(rospy.Duration(POLL), self.on_timer)
+        threading.Thread(target=self.watch_server, daemon=True).start()
 
     def connected(self):
         """freebot_ik reads the goals and publishes the results (the action server is up)."""
         return self.goal_pub.get_num_connections() > 0 and self.result_sub.get_num_connections() > 0
 
-    # --- lock-step (docs/lockstep.md) -------------------------------------------------------------
+    def server_up(self):
+        """With the lock held: freebot_ik has been connected for 1 s of wall time without a break
+        (long enough for a restarted one to have subscribed to the goals)."""
+        return self.connected_since is not None and time.time() - self.connected_since >= 1.0
 
-    def send_joins(self):
-        """Asks to join every 0.25 s of wall time, once connected for 1 s, until a request comes,
-        and again after 1 s without one."""
-        connected_since = None
+    def watch_server(self):
+        """Every 0.25 s of wall time: whether freebot_ik is connected, and since when; a goal out
+        when it is not is lost. In lock-step, asks to join once the server is up, until a request
+        comes, and again after 1 s without one."""
         while not rospy.is_shutdown():
             time.sleep(0.25)
-            if not self.connected():
-                connected_since = None
-            elif connected_since is None:
-                connected_since = time.time()
             with self.lock:
-                quiet = (self.last_request_wall is None
-                         or time.time() - self.last_request_wall > 1.0)
-            if quiet and connected_since is not None and time.time() - connected_since >= 1.0:
+                if not self.connected():
+                    self.connected_since = None
+                    self.goal_lost = self.goal_lost or self.out is not None
+                elif self.connected_since is None:
+                    self.connected_since = time.time()
+                join = self.lockstep and self.server_up() and (
+                    self.last_request_wall is None or time.time() - self.last_request_wall > 1.0)
+            if join:
                 self.ack_pub.publish(LockstepAck(participant=self.name))
+
+    # --- lock-step (docs/lockstep.md) -------------------------------------------------------------
 
     def on_step(self, request):
         if request.participant != self.name:
@@ -129,12 +141,12 @@ class GoalSequence:
         rejected it on arrival, outside a step: a bad ~frame) is taken at the next step too."""
         if self.pending is None:
             return
-        if (self.awaiting is not None and self.out not in self.results
+        if (self.awaiting is not None and self.result is None
                 and self.other_results == self.awaiting):
             return
         self.awaiting = None
         stamp, self.pending = self.pending, None
-        published, next_time = self.work(stamp, self.out in self.results)
+        published, next_time = self.work(stamp, self.result is not None)
         self.ack_pub.publish(LockstepAck(stamp=stamp, participant=self.name, published=published,
                                          next=next_time))
 
@@ -142,9 +154,8 @@ class GoalSequence:
 
     def on_result(self, msg):
         with self.lock:
-            goal_id = msg.status.goal_id.id
-            if goal_id.startswith(self.name + '-'):
-                self.results[goal_id] = msg
+            if self.out is not None and msg.status.goal_id.id == self.out:
+                self.result = msg
             else:
                 self.other_results += 1
             if self.lockstep:
@@ -153,26 +164,32 @@ class GoalSequence:
     def on_timer(self, _event):
         now = rospy.Time.now()
         with self.lock:
-            if not now.is_zero() and self.connected():
-                self.work(now, self.out in self.results)
+            if not now.is_zero():
+                self.work(now, self.result is not None)
 
     def work(self, stamp, ended):
         """At step time `stamp`: takes the result of the goal out if `ended`, sends the next goal
         when due. Returns the topics published and the time of the next look."""
         t = stamp.to_sec()
         if ended:
-            result = self.results.pop(self.out)
             rospy.loginfo('target %d: %s', self.index + 1,
-                          result.result.message or result.status.text)
-            self.out = None
+                          self.result.result.message or self.result.status.text)
+            self.out = self.result = None
+            self.goal_lost = False
             self.index += 1
             self.send_at = t + self.dwell
             if self.index == len(self.goals):
                 rospy.loginfo('all %d targets done', len(self.goals))
                 if self.loop:
                     self.index = 0
+        elif self.goal_lost and self.server_up():
+            rospy.logwarn('target %d: freebot_ik went away while driving to it; sending it again',
+                          self.index + 1)
+            self.out = None
+            self.goal_lost = False
         published = []
-        if self.out is None and self.index < len(self.goals) and t >= self.send_at:
+        if (self.out is None and self.index < len(self.goals) and t >= self.send_at
+                and self.server_up()):
             self.send(stamp)
             published.append(self.goal_pub.resolved_name)
         waits = self.out is None and self.index < len(self.goals)
