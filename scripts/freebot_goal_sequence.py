@@ -19,14 +19,17 @@ MoveFreebotActionResult from move_freebot/result. Outside lock-step it looks eve
 time.
 
 A goal out when freebot_ik dies (killed, crashed) dies with it: the freebot_ik that roslaunch
-restarts (respawn:=true) has never heard of it, and its result would never come. This node sends
-that target again once the new freebot_ik has been connected for 1 s of wall time.
+restarts (respawn:=true) has never heard of it, and its result would never come. This node knows
+the action's server by the URI the master has for the node publishing its results (a restarted
+node registers under a new one) and sends the target again once a new server has been up (and
+connected) for 1 s of wall time.
 """
 import copy
 import math
 import threading
 import time
 
+import rosgraph
 import rospy
 
 from spherical_robots.msg import (LockstepAck, LockstepStep, MoveFreebotActionGoal,
@@ -69,8 +72,10 @@ class GoalSequence:
         self.send_at = 0.0      # [s] the earliest time of the next goal
         self.result = None      # the MoveFreebotActionResult of the goal out
         self.other_results = 0  # results of other goals: other clients', this node's lost ones
-        self.connected_since = None  # [s] of wall time, while freebot_ik is connected
-        self.goal_lost = False  # freebot_ik went away while a goal was out
+        self.server = ()        # the URIs of the action's server, () while none is connected
+        self.server_since = 0.0  # [s] of wall time since self.server is what it is
+        self.out_server = ()    # self.server when the goal out was sent
+        self.goal_lost = False  # the server went away while a goal was out
         self.goal_pub = rospy.Publisher('move_freebot/goal', MoveFreebotActionGoal, queue_size=10,
                                         tcp_nodelay=True)
         self.result_sub = rospy.Subscriber('move_freebot/result', MoveFreebotActionResult,
@@ -96,22 +101,33 @@ class GoalSequence:
         return self.goal_pub.get_num_connections() > 0 and self.result_sub.get_num_connections() > 0
 
     def server_up(self):
-        """With the lock held: freebot_ik has been connected for 1 s of wall time without a break
-        (long enough for a restarted one to have subscribed to the goals)."""
-        return self.connected_since is not None and time.time() - self.connected_since >= 1.0
+        """With the lock held: the same server has been connected for 1 s of wall time (long
+        enough for a restarted one to have subscribed to the goals)."""
+        return bool(self.server) and time.time() - self.server_since >= 1.0
+
+    def server_uris(self, master):
+        """The URIs of the nodes publishing the action's results: a node that roslaunch restarts
+        registers under a new one (rospy can keep counting a connection to a dead publisher while it
+        retries it, so the connection count alone can miss a restart)."""
+        publishers = dict(master.getSystemState()[0]).get(self.result_sub.resolved_name, [])
+        return tuple(sorted(master.lookupNode(node) for node in publishers))
 
     def watch_server(self):
-        """Every 0.25 s of wall time: whether freebot_ik is connected, and since when; a goal out
-        when it is not is lost. In lock-step, asks to join once the server is up, until a request
-        comes, and again after 1 s without one."""
+        """Every 0.25 s of wall time: which server is connected, and since when; a goal out when
+        its server has gone is lost. In lock-step, asks to join once the server is up, until a
+        request comes, and again after 1 s without one."""
+        master = rosgraph.Master(self.name)
         while not rospy.is_shutdown():
             time.sleep(0.25)
+            try:
+                server = self.server_uris(master) if self.connected() else ()
+            except (rosgraph.MasterError, OSError):  # the master is going away at the end
+                continue
             with self.lock:
-                if not self.connected():
-                    self.connected_since = None
-                    self.goal_lost = self.goal_lost or self.out is not None
-                elif self.connected_since is None:
-                    self.connected_since = time.time()
+                if server != self.server:
+                    self.server, self.server_since = server, time.time()
+                if self.out is not None and self.server != self.out_server:
+                    self.goal_lost = True
                 join = self.lockstep and self.server_up() and (
                     self.last_request_wall is None or time.time() - self.last_request_wall > 1.0)
             if join:
@@ -204,6 +220,7 @@ class GoalSequence:
         msg.goal = copy.deepcopy(self.goals[self.index])
         msg.goal.target.header.stamp = stamp
         self.out = msg.goal_id.id
+        self.out_server = self.server
         self.goal_pub.publish(msg)
         rospy.loginfo('target %d of %d: %s', self.index + 1, len(self.goals),
                       msg.goal.target.pose.position)
