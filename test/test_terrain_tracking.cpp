@@ -152,12 +152,11 @@ struct RunResult {
   double time_to_converge, mean_after, max_after, max_surface_gap;
 };
 
-RunResult run(const TrackingCase& c) {
+RunResult run(const TrackingCase& c, const PursuitController& ctrl) {
   const config::TerrainConfig cfg = shippedTerrainConfig();
   const auto surface = config::makeSurface(cfg.surface);
   const auto path = config::makePath(c.path, cfg);
   const TerrainKinematics kin(*surface, c.type, kRadius, c.model, cfg.tilt_limit);
-  const PurePursuitController ctrl(c.type, cfg.gains.at(c.type), kRadius);
   TerrainSimulation sim(kin, ctrl, *path, TerrainState{});
   TrackingSummary summary(kThreshold, kSettle);
   RunResult r{};
@@ -173,6 +172,10 @@ RunResult run(const TrackingCase& c) {
   r.mean_after = summary.meanAfterSettling();
   r.max_after = summary.maxAfterSettling();
   return r;
+}
+
+RunResult run(const TrackingCase& c) {
+  return run(c, PurePursuitController(c.type, shippedTerrainConfig().gains.at(c.type), kRadius));
 }
 
 class PaperTrackingClaim : public ::testing::TestWithParam<TrackingCase> {};
@@ -200,6 +203,64 @@ TEST_P(PaperTrackingClaim, ConvergesWithin30sAndStaysOnThePathAfter40s) {
 INSTANTIATE_TEST_SUITE_P(RobotsPathsModels, PaperTrackingClaim,
                          ::testing::ValuesIn(spherical_robots::test_support::allBatchCases()),
                          spherical_robots::test_support::batchCaseName);
+
+// ------------------------------------------------------------------------------------------
+// docs/errata.md T3: the printed signs, each in this package's (right-handed) kinematics. The
+// printed eq 25 makes psi left-handed, which with the heading laws of eqs 55/57 as printed is
+// psi_dot = -k_psi zeta here; the printed tilt law of eq 58 is phi_dot = +k_phi zeta.
+
+/// The paper's law with the sign of its heading (3R, RT) or tilt (RS) term as printed.
+class PrintedSignController : public PursuitController {
+ public:
+  PrintedSignController(RobotType type, const PursuitGains& gains)
+      : law_(type, gains, kRadius) {}
+  RobotType type() const override { return law_.type(); }
+  VelocityWindow velocityWindow() const override { return law_.velocityWindow(); }
+  bool readsZeta() const override { return true; }
+  DriveRates command(const ContactGeometry& geometry, double tilt, const TrackingError& error,
+                     const Eigen::Vector3d& desired_velocity) const override {
+    DriveRates rates = law_.command(geometry, tilt, error, desired_velocity);
+    if (type() == RobotType::RollingAndSteering) {
+      rates.lateral_rate = -rates.lateral_rate;  // eq 58 printed: +k_phi zeta
+    } else {
+      rates.turn_rate = -rates.turn_rate;  // eqs 55/57 with eq 25's handedness
+    }
+    return rates;
+  }
+
+ private:
+  PurePursuitController law_;
+};
+
+struct PrintedSignCase {
+  RobotType type;
+  double mean_after, max_after;  // [m] docs/errata.md T3, to the printed digits
+  double digits;                 // [m] half a unit of the last printed digit
+};
+
+class PrintedSigns : public ::testing::TestWithParam<PrintedSignCase> {};
+
+TEST_P(PrintedSigns, NeverConvergeWithTheErrataFigures) {
+  const PrintedSignCase p = GetParam();
+  const TrackingCase circle{p.type, "circle", ContactModel::Paper};
+  const RunResult r =
+      run(circle, PrintedSignController(p.type, shippedTerrainConfig().gains.at(p.type)));
+  std::cout << std::fixed << std::setprecision(4) << "[ result   ] " << toString(p.type)
+            << " circle, printed sign: after 40 s mean " << r.mean_after << " m, max "
+            << r.max_after << " m\n";
+  EXPECT_TRUE(std::isnan(r.time_to_converge)) << "converged at " << r.time_to_converge << " s";
+  EXPECT_NEAR(r.mean_after, p.mean_after, p.digits);
+  EXPECT_NEAR(r.max_after, p.max_after, p.digits);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    ErrataT3, PrintedSigns,
+    ::testing::Values(PrintedSignCase{RobotType::ThreeAxisRolling, 0.528, 0.552, 5e-4},
+                      PrintedSignCase{RobotType::RollingAndTurning, 0.529, 0.552, 5e-4},
+                      PrintedSignCase{RobotType::RollingAndSteering, 3.73, 6.38, 5e-3}),
+    [](const ::testing::TestParamInfo<PrintedSignCase>& info) {
+      return spherical_robots::test_support::testName(info.param.type);
+    });
 
 }  // namespace
 
