@@ -163,6 +163,10 @@ TEST(NormaDynamics, VariantsDifferOnlyBySphereYawTermInM11) {
   const double i_z = 2.0 / 3.0 * 2.5 * 0.04 + 1.0 / 3.0 * 0.5 * 0.04 * std::pow(std::cos(0.4), 2);
   expected(0, 0) = i_z * std::pow(std::sin(0.4), 2);
   EXPECT_LT((text.massMatrix(q) - appendix.massMatrix(q) - expected).cwiseAbs().maxCoeff(), 1e-15);
+  // docs/errata.md N3: at the tracking run's largest tilt, phi = 0.373 rad, the term is
+  // 0.0096 kg m^2.
+  const Vector4 tilted(0.3, -0.2, 0.373, 0.05);
+  EXPECT_NEAR(text.massMatrix(tilted)(0, 0) - appendix.massMatrix(tilted)(0, 0), 0.0096, 5e-5);
   // Upright (φ = 0) the term vanishes.
   EXPECT_EQ(text.massMatrix(Vector4(0.3, -0.2, 0.0, 0.05)),
             appendix.massMatrix(Vector4(0.3, -0.2, 0.0, 0.05)));

@@ -140,6 +140,33 @@ TEST_P(TangentFrameOnSlope, EqualsEigenAxisAngleAndTheCorrectedAppendixA6) {
   expectMatrixNear(tangentFrame(g), correctedA6(g), 1e-14);
 }
 
+// docs/errata.md T5, at its point f_x = 0.3, f_y = -0.2: the printed A.5 (q_k = 0) and A.6 are
+// not rotations, and neither is eq 23; the corrected A.6 is, to 1e-16.
+TEST(AppendixA, PrintedA5AndA6AreNotRotationsAtTheErrataPoint) {
+  const Eigen::Vector2d g(0.3, -0.2);
+  const double s = 1.0 / g.norm();
+  const double gamma = std::atan2(g.norm(), 1.0);  // eq 16
+  const double qr = std::cos(gamma / 2), qi = s * g.y() * std::sin(gamma / 2),
+               qj = -s * g.x() * std::sin(gamma / 2), qk = 0.0;
+  Eigen::Matrix3d a5, a6;
+  a5 << 1 - 2 * (qj * qj + qk * qk), 2 * (qi * qj - qk * qr), 2 * (qi * qk - qj * qr),  //
+      2 * (qi * qj - qk * qr), 1 - 2 * (qi * qi + qk * qk), 2 * (qj * qk - qi * qr),    //
+      2 * (qi * qk - qj * qr), 2 * (qj * qk - qi * qr), 1 - 2 * (qi * qi + qj * qj);
+  a6 << 1 - 2 * qj * qj, 2 * qi * qj, -2 * qi * qr,  //
+      2 * qi * qj, 1 - 2 * qi * qi, -2 * qi * qr,    //
+      -2 * qi * qr, -2 * qi * qr, 1 - 2 * (qi * qi + qj * qj);
+  const auto orthogonality_error = [](const Eigen::Matrix3d& r) {
+    return (r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+  };
+  const Eigen::Matrix3d eq23 = printedEq23(g);
+  // The printed digits.
+  EXPECT_NEAR(orthogonality_error(a5), 0.54, 0.005);
+  EXPECT_NEAR((a5 - eq23).cwiseAbs().maxCoeff(), 0.56, 0.005);
+  EXPECT_NEAR(orthogonality_error(a6), 0.37, 0.005);
+  EXPECT_NEAR((a6 - eq23).cwiseAbs().maxCoeff(), 0.47, 0.005);
+  expectMatrixNear(correctedA6(g), eq23, 1e-16);
+}
+
 // Minimal rotation (the eq 11 choice e = z x n): the rotation axis lies in the horizontal plane,
 // so the frame has no twist about z. Equivalently, the rotation angle equals the angle between z
 // and n, which no other rotation taking z to n achieves.
