@@ -204,6 +204,34 @@ INSTANTIATE_TEST_SUITE_P(RobotsPathsModels, PaperTrackingClaim,
                          ::testing::ValuesIn(spherical_robots::test_support::allBatchCases()),
                          spherical_robots::test_support::batchCaseName);
 
+// docs/errata.md T9: the 2R law (eq 56) has no feed-forward, so on a straight edge at speed v it
+// settles, target straight ahead (zeta = 0), where R (k_theta1 g + k_theta2) = v with
+// g = |e_t| / (k_e + |e_t|): g = (v / R - k_theta2) / k_theta1 = 0.0667 and
+// |e_t| = k_e g / (1 - g) = 0.0357 m for the shipped gains (3, 0.3, k_e 0.5) and v = 0.1 m/s.
+TEST(ErrataT9, TwoRSteadyLagOnAStraightEdgeIsTheClosedForm) {
+  const config::TerrainConfig cfg = shippedTerrainConfig();
+  const PursuitGains& gains = cfg.gains.at(RobotType::TwoAxisRolling);
+  const PurePursuitController law(RobotType::TwoAxisRolling, gains, kRadius);
+  const Eigen::Vector3d edge_velocity(cfg.diamond_speed, 0.0, 0.0);
+  const auto speed_at = [&](double lag) {
+    TrackingError error;
+    error.error = Eigen::Vector3d(lag, 0.0, 0.0);
+    error.norm = lag;
+    return kRadius * law.command(error, edge_velocity).roll_rate;
+  };
+  // The lag where the law's speed equals the edge's, by bisection (the speed grows with the lag).
+  double lo = 0.0, hi = 1.0;
+  ASSERT_LT(speed_at(lo), cfg.diamond_speed);
+  ASSERT_GT(speed_at(hi), cfg.diamond_speed);
+  while (hi - lo > 1e-12) {
+    const double mid = 0.5 * (lo + hi);
+    (speed_at(mid) < cfg.diamond_speed ? lo : hi) = mid;
+  }
+  const double lag = 0.5 * (lo + hi);
+  EXPECT_NEAR(lag / (gains.k_e + lag), 0.0667, 5e-5);  // g
+  EXPECT_NEAR(lag, 0.036, 5e-4);                       // |e_t| [m]
+}
+
 // ------------------------------------------------------------------------------------------
 // docs/errata.md T3: the printed signs, each in this package's (right-handed) kinematics. The
 // printed eq 25 makes psi left-handed, which with the heading laws of eqs 55/57 as printed is
