@@ -150,6 +150,29 @@ TEST_P(JacobianTest, MatchesFiniteDifferencesOfRolling) {
 INSTANTIATE_TEST_SUITE_P(ChainsOf2To6, JacobianTest,
                          ::testing::Combine(::testing::Range(2, 7), ::testing::Bool()));
 
+TEST(SrcManipulatorTest, PrimedJacobianOfEq35LacksTheLeverArmBeyondEachJoint) {
+  // Errata F5: eq 38 stacks the primed J'_{B_n v} of eq 35, [^I R_{B_0} Φ_{1v} ... ^I R_{B_{n-1}}
+  // Φ_{nv}], each joint's column moving only its own link. For three Table II links (0.034 m)
+  // rolled by (0.5, 0.3), (−0.4, 0.6), (0.2, −0.7) rad it is off from J_{B_n v} by 0.124, 0.136,
+  // 0.068, 0.068, 0, 0 m/s per rad/s (column norms).
+  const SrcManipulator chain({0.034, 0.034, 0.034, 0.034});
+  const std::vector<SrcJointState> states =
+      chain.straightRolls({{0.5, 0.3}, {-0.4, 0.6}, {0.2, -0.7}});
+  const std::vector<LinkPose> poses = chain.forwardKinematics(states);
+  Eigen::MatrixXd primed(3, 6);
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Matrix3d base_to_inertial =
+        i == 0 ? Eigen::Matrix3d::Identity() : poses[i - 1].orientation.toRotationMatrix();
+    primed.middleCols<2>(2 * i) =
+        base_to_inertial * chain.joint(i).freeModes(states[i]).bottomRows<3>();  // eq 35
+  }
+  const Eigen::MatrixXd off = chain.jacobian(states).topRows<3>() - primed;
+  const double printed[] = {0.124, 0.136, 0.068, 0.068, 0.0, 0.0};
+  for (int column = 0; column < 6; ++column) {
+    EXPECT_NEAR(off.col(column).norm(), printed[column], 5e-4) << "column " << column + 1;
+  }
+}
+
 TEST(SrcManipulatorTest, JacobianComesWithTheEndEffectorPose) {
   std::mt19937 rng(5);
   const SrcManipulator chain({0.03, 0.05, 0.02});

@@ -444,6 +444,47 @@ TEST(RollingModel, DiffersFromThePaperModelOnCurvedGround) {
   EXPECT_GT(std::hypot(a.x_dot - b.x_dot, a.y_dot - b.y_dot), 1e-3);
 }
 
+// docs/errata.md T7: the tangent frame of eq 23 turns about n by itself as P0 goes round the circle
+// (r = 2 m) on eq 59, by the Gaussian curvature it encloses (Gauss-Bonnet): -∬K dA = 0.85 rad.
+TEST(RollingModel, TangentFrameTurnsByTheEnclosedCurvaturePerLapOfTheCircle) {
+  const CosineSurface surface(0.2, 2.0);
+  constexpr double kCircle = 2.0;  // [m] eq 60, corrected (errata T1)
+  // ∬K dA over the disk: K = det(Hessian) / (1 + |grad f|^2)^2, dA = (1 + |grad f|^2)^(1/2) dx dy;
+  // midpoint rule in polar coordinates.
+  constexpr int kRadial = 400, kAngular = 800;
+  double enclosed = 0.0;
+  for (int i = 0; i < kRadial; ++i) {
+    const double rho = (i + 0.5) * kCircle / kRadial;
+    for (int j = 0; j < kAngular; ++j) {
+      const double angle = (j + 0.5) * 2.0 * kPi / kAngular;
+      const SurfacePoint p = surface.evaluate(rho * std::cos(angle), rho * std::sin(angle));
+      const double metric = 1.0 + p.gradient.squaredNorm();
+      enclosed += p.hessian.determinant() / std::pow(metric, 1.5) * rho;
+    }
+  }
+  enclosed *= (kCircle / kRadial) * (2.0 * kPi / kAngular);
+  EXPECT_NEAR(-enclosed, 0.85, 0.005);
+  // The same angle as the frame's own turn: carry a tangent vector round the circle (counter-
+  // clockwise, as the path runs) by parallel transport, projecting it on each new tangent plane,
+  // and add up how its angle in the frame changes; the frame turns the other way.
+  constexpr int kSteps = 20000;
+  const auto frameAt = [&](double angle) {
+    return headingFrameOf(surface.evaluate(kCircle * std::cos(angle), kCircle * std::sin(angle))
+                              .gradient,
+                          0.0);
+  };
+  Eigen::Vector3d carried = frameAt(0.0).col(0);
+  double frame_turn = 0.0, previous = 0.0;
+  for (int k = 1; k <= kSteps; ++k) {
+    const Eigen::Matrix3d frame = frameAt(2.0 * kPi * k / kSteps);
+    carried = (carried - carried.dot(frame.col(2)) * frame.col(2)).normalized();
+    const double in_frame = std::atan2(carried.dot(frame.col(1)), carried.dot(frame.col(0)));
+    frame_turn -= std::remainder(in_frame - previous, 2.0 * kPi);
+    previous = in_frame;
+  }
+  EXPECT_NEAR(frame_turn, -enclosed, 1e-3);
+}
+
 // ------------------------------------------------------------------------------------------
 // RS specifics: eq 44, the cone's circle, the tilt limit.
 
