@@ -9,9 +9,11 @@
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "spherical_robots/freebot/src_inverse_kinematics.hpp"
@@ -240,34 +242,88 @@ TEST(PaperTargetsTest, CIsOutOfReachOfThreeJoints) {
   EXPECT_NEAR(result.position_error, kC.position.norm() - chain.reach(), 1e-5);
 }
 
+// Eqs 66, 67: the published q_1 ... q_3 for target A, then for target B.
+const std::vector<Eigen::Quaterniond> kPublishedJoints = {
+    {0.7992, 0.1912, -0.5698, 0.0016},   {-0.5579, -0.1939, -0.7714, -0.2366},
+    {0.1270, -0.4998, -0.3887, 0.7636},  {-0.4558, 0.5135, -0.7261, -0.0367},
+    {-0.0130, -0.6933, 0.0267, -0.7200}, {0.0880, 0.2577, 0.8231, -0.4983}};
+
+/// How far B_3 of a 3-joint Table II chain ends from a target, each joint rolled straight from the
+/// aligned start about a rotation vector [rad] (any z part included): position [mm] and
+/// orientation [deg].
+Eigen::Vector2d missOfStraightRolls(const std::vector<Eigen::Vector3d>& rotations,
+                                    const PaperTarget& target) {
+  const SrcManipulator chain(std::vector<double>(4, kRadius));
+  std::vector<SrcJointState> joints;
+  for (const Eigen::Vector3d& u : rotations) {
+    joints.push_back({rotationQuaternion(0.5 * u), rotationQuaternion(-0.5 * u)});
+  }
+  const LinkPose end = chain.forwardKinematics(joints).back();
+  return {1e3 * (end.position - target.position).norm(),
+          angleBetween(end.orientation, target.orientation.normalized()) * 180.0 / M_PI};
+}
+
+/// The rotation vectors of a published set (0: target A, 1: B) read the way `reading` says.
+enum class Reading { kJoint, kJointXyOnly, kLinkInInertial, kConjugate, kXyzw };
+std::vector<Eigen::Vector3d> rotationsOf(int set, Reading reading) {
+  std::vector<Eigen::Vector3d> rotations;
+  Eigen::Quaterniond previous_link = Eigen::Quaterniond::Identity();  // q_{0,I}
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Quaterniond& p = kPublishedJoints[3 * set + i];
+    Eigen::Quaterniond q = p.normalized();
+    switch (reading) {
+      case Reading::kJoint:
+      case Reading::kJointXyOnly:
+        break;
+      case Reading::kLinkInInertial:  // q_i = q_{i-1,I}^-1 q_{i,I}
+        q = previous_link.conjugate() * p.normalized();
+        previous_link = p.normalized();
+        break;
+      case Reading::kConjugate:
+        q = p.normalized().conjugate();
+        break;
+      case Reading::kXyzw:  // the printed (a, b, c, d) as (x, y, z, w)
+        q = Eigen::Quaterniond(p.z(), p.w(), p.x(), p.y()).normalized();
+        break;
+    }
+    Eigen::Vector3d u = rotationVector(q);
+    if (reading == Reading::kJointXyOnly) u.z() = 0.0;
+    rotations.push_back(u);
+  }
+  return rotations;
+}
+
 TEST(PaperTargetsTest, PublishedJointQuaternionsAreNotRollingStates) {
   // Eqs 66, 67. Equal spheres roll as mirror images: every joint quaternion they can reach turns
   // about an axis in B_{i-1}'s xy plane, so ε_z = 0 (test_src_joint,
   // EqualSpheresRollAsMirrorImages). Five of the six published ones have |ε_z| > 0.02 (0.0367 …
   // 0.7636).
-  const std::vector<Eigen::Quaterniond> published = {
-      {0.7992, 0.1912, -0.5698, 0.0016},   {-0.5579, -0.1939, -0.7714, -0.2366},
-      {0.1270, -0.4998, -0.3887, 0.7636},  {-0.4558, 0.5135, -0.7261, -0.0367},
-      {-0.0130, -0.6933, 0.0267, -0.7200}, {0.0880, 0.2577, 0.8231, -0.4983}};
   int off_plane = 0;
-  for (const Eigen::Quaterniond& q : published) {
+  for (const Eigen::Quaterniond& q : kPublishedJoints) {
     EXPECT_NEAR(q.norm(), 1.0, 1e-4);  // unit to the printed digits
     off_plane += std::abs(q.z()) > 0.02 ? 1 : 0;
   }
   EXPECT_EQ(off_plane, 5);
-  // Read as joint quaternions q_i (each joint rolled straight about its rotation vector, any z
-  // part included), they put B_3 far from targets A and B.
-  const SrcManipulator chain(std::vector<double>(4, kRadius));
-  const PaperTarget targets[] = {kA, kB};
-  for (int set = 0; set < 2; ++set) {
-    std::vector<SrcJointState> joints;
-    for (int i = 0; i < 3; ++i) {
-      const Eigen::Vector3d u = rotationVector(published[3 * set + i].normalized());
-      joints.push_back({rotationQuaternion(0.5 * u), rotationQuaternion(-0.5 * u)});
-    }
-    const LinkPose end = chain.forwardKinematics(joints).back();
-    EXPECT_GT((end.position - targets[set].position).norm(), 0.1);
-    EXPECT_GT(angleBetween(end.orientation, targets[set].orientation.normalized()), 1.0);
+  // No reading of them puts B_3 near targets A and B: errata F12's table, to its printed digits
+  // (0.5 mm, 0.5 deg).
+  struct Row {
+    Reading reading;
+    double a_mm, a_deg, b_mm, b_deg;
+  };
+  const Row rows[] = {{Reading::kJoint, 259, 174, 138, 160},
+                      {Reading::kJointXyOnly, 242, 110, 189, 154},
+                      {Reading::kLinkInInertial, 263, 172, 171, 159},
+                      {Reading::kConjugate, 135, 103, 283, 121},
+                      {Reading::kXyzw, 234, 148, 355, 87}};
+  for (const Row& row : rows) {
+    SCOPED_TRACE("reading " + std::to_string(static_cast<int>(row.reading)));
+    const Eigen::Vector2d a = missOfStraightRolls(rotationsOf(0, row.reading), kA);
+    const Eigen::Vector2d b = missOfStraightRolls(rotationsOf(1, row.reading), kB);
+    std::cout << "[ result   ] A " << a.transpose() << ", B " << b.transpose() << "\n";
+    EXPECT_NEAR(a.x(), row.a_mm, 0.5);
+    EXPECT_NEAR(a.y(), row.a_deg, 0.5);
+    EXPECT_NEAR(b.x(), row.b_mm, 0.5);
+    EXPECT_NEAR(b.y(), row.b_deg, 0.5);
   }
 }
 
