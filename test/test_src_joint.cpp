@@ -104,10 +104,11 @@ SrcJointState modelRoll(const SrcJoint& joint, double duration, double dt) {
 
 class RadiiTest : public ::testing::TestWithParam<std::pair<double, double>> {};
 
-/// Largest difference between the world-frame integration and the joint model after
-/// `duration`, both stepped with dt: centre [m] / (l_i + l_{i-1}), B_i's and P_i's rotations.
-double modelDiscrepancy(double base, double link, double dt, double duration) {
-  const SrcJoint joint(base, link);
+/// Largest difference between the world-frame integration of B_i (radius link) rolling on B_{i-1}
+/// (radius base) and a joint model after `duration`, both stepped with dt: centre [m] /
+/// (l_i + l_{i-1}), B_i's and P_i's rotations.
+double modelDiscrepancy(const SrcJoint& joint, double base, double link, double dt,
+                        double duration) {
   WorldRolling world(base, link);
   for (double t = 0.0; t < duration - 1e-12; t += dt) {
     world.step(t, dt);
@@ -125,34 +126,37 @@ TEST_P(RadiiTest, WorldFrameRollingMatchesTheJointModel) {
   const auto [base, link] = GetParam();
   // The model holds the velocity over a step (midpoint rule), RK4 does not: they differ by
   // O(dt²), and by nothing else — halving dt divides the discrepancy by 4.
-  const double coarse = modelDiscrepancy(base, link, 1e-3, 6.0);
-  const double fine = modelDiscrepancy(base, link, 5e-4, 6.0);
+  const SrcJoint joint(base, link);
+  const double coarse = modelDiscrepancy(joint, base, link, 1e-3, 6.0);
+  const double fine = modelDiscrepancy(joint, base, link, 5e-4, 6.0);
   EXPECT_LT(coarse, 1e-6);
   EXPECT_NEAR(coarse / fine, 4.0, 0.2);
 }
 
-TEST_P(RadiiTest, ContactSweepsEqualArcsAndIsAtRest) {
-  const auto [base, link] = GetParam();
-  const SrcJoint joint(base, link);
+/// What a joint model does at the contact over 3 s of the curved path (dt = 1e-4 s), with B_i of
+/// radius link on B_{i-1} of radius base.
+struct ContactSweep {
+  double arc_base = 0.0;             ///< [m] swept by the contact point on B_{i-1}
+  double arc_link = 0.0;             ///< [m] swept on B_i
+  double worst_contact_speed = 0.0;  ///< [m/s] of B_i's material point at the contact
+  double largest_speed = 0.0;        ///< [m/s] of B_i's centre
+};
+
+ContactSweep sweepContact(const SrcJoint& joint, double base, double link) {
   const double dt = 1e-4;
   SrcJointState state;
-  double arc_base = 0.0;
-  double arc_link = 0.0;
-  double worst_contact_speed = 0.0;
-  double largest_speed = 0.0;
-  // Copied in: a lambda may capture a structured binding only from C++20 on (clang 14, which
-  // builds scripts/sanitize_tests.sh, refuses it in C++17).
-  const auto contact_on_base = [&, base = base](const SrcJointState& s) {
+  ContactSweep sweep;
+  const auto contact_on_base = [&](const SrcJointState& s) {
     return Eigen::Vector3d(base * joint.position(s).normalized());
   };
-  const auto contact_on_link = [&, link = link](const SrcJointState& s) {  // in B_i's own frame
+  const auto contact_on_link = [&](const SrcJointState& s) {  // in B_i's own frame
     return Eigen::Vector3d(SrcJoint::jointQuaternion(s).conjugate() *
                            (-link * joint.position(s).normalized()));
   };
   for (double t = 0.0; t < 3.0; t += dt) {
     const SrcJointState next = joint.roll(state, curvedVelocity(t + 0.5 * dt), dt);
-    arc_base += (contact_on_base(next) - contact_on_base(state)).norm();
-    arc_link += (contact_on_link(next) - contact_on_link(state)).norm();
+    sweep.arc_base += (contact_on_base(next) - contact_on_base(state)).norm();
+    sweep.arc_link += (contact_on_link(next) - contact_on_link(state)).norm();
     // Velocity of B_i's material point at the contact, from the model's pose (central in time).
     const Eigen::Quaterniond q0 = SrcJoint::jointQuaternion(state);
     const Eigen::Quaterniond q1 = SrcJoint::jointQuaternion(next);
@@ -160,13 +164,19 @@ TEST_P(RadiiTest, ContactSweepsEqualArcsAndIsAtRest) {
     const Eigen::Vector3d centre_rate = (joint.position(next) - joint.position(state)) / dt;
     const Eigen::Vector3d mid_normal = (joint.position(next) + joint.position(state)).normalized();
     const Eigen::Vector3d contact_rate = centre_rate + omega.cross(-link * mid_normal);
-    worst_contact_speed = std::max(worst_contact_speed, contact_rate.norm());
-    largest_speed = std::max(largest_speed, centre_rate.norm());
+    sweep.worst_contact_speed = std::max(sweep.worst_contact_speed, contact_rate.norm());
+    sweep.largest_speed = std::max(sweep.largest_speed, centre_rate.norm());
     state = next;
   }
-  EXPECT_GT(arc_base, 0.5 * base);
-  EXPECT_NEAR(arc_link / arc_base, 1.0, 1e-6);
-  EXPECT_LT(worst_contact_speed, 1e-6 * largest_speed);
+  return sweep;
+}
+
+TEST_P(RadiiTest, ContactSweepsEqualArcsAndIsAtRest) {
+  const auto [base, link] = GetParam();
+  const ContactSweep sweep = sweepContact(SrcJoint(base, link), base, link);
+  EXPECT_GT(sweep.arc_base, 0.5 * base);
+  EXPECT_NEAR(sweep.arc_link / sweep.arc_base, 1.0, 1e-6);
+  EXPECT_LT(sweep.worst_contact_speed, 1e-6 * sweep.largest_speed);
 }
 
 // Paper section V-A: l_i = 0.03 m on l_{i-1} = 0.04 m; plus equal radii and a large ratio.
@@ -193,6 +203,23 @@ TEST(SrcJointTest, PrintedRatesOfEqs1And13SlipWithUnequalRadii) {
              Eigen::Vector3d(0.3, -0.4, 0.0))
                 .norm(),
             1e-15);
+}
+
+TEST(SrcJointTest, PrintedRatesSlipAndDriftFromRolling) {
+  // Errata F1's figures for the printed rates, l_i = 0.03 m on l_{i-1} = 0.04 m. Eqs 1 and 13 as
+  // printed, l_i/(l_i+l_{i-1}) ω and −l_{i-1}/(l_i+l_{i-1}) ω, are the corrected rates of a joint
+  // with the two radii exchanged (and eq 7's centre distance l_i + l_{i-1} is the same).
+  const double base = 0.04;
+  const double link = 0.03;
+  const SrcJoint printed(link, base);
+  const ContactSweep sweep = sweepContact(printed, base, link);
+  EXPECT_NEAR(sweep.arc_link / sweep.arc_base, 0.5625, 5e-5);  // (l_i/l_{i-1})²
+  // The contact point moves at (l_{i-1} − l_i) |ω| and the centre at l_{i-1} |ω|; the path's
+  // largest |ω| in 3 s is 1.7856 rad/s (at t = 3 s): 0.0179 and 0.071 m/s.
+  EXPECT_NEAR(sweep.worst_contact_speed, 0.0179, 5e-5);
+  EXPECT_NEAR(sweep.largest_speed, 0.071, 5e-4);
+  // And it drifts from the world-frame rolling (RadiiTest's O(dt²) for the corrected rates).
+  EXPECT_NEAR(modelDiscrepancy(printed, base, link, 1e-3, 6.0), 0.89, 5e-3);
 }
 
 TEST(SrcJointTest, QuaternionRateIsEq2) {
