@@ -230,9 +230,9 @@ TEST(NormaSimulation, PaperLoopModesOnThePathStart) {
   std::complex<double> pendulum(0.0, 0.0), tilt(nan, nan), steering(nan, nan);
   for (int i = 0; i < modes.size(); ++i) {
     const std::complex<double> m = modes(i);
-    if (m.real() < pendulum.real()) pendulum = m;                // the fastest
-    if (m.imag() > 1.0 && m.imag() < 2.5) tilt = m;             // near the tilt's ≈1.7 rad/s
-    if (m.imag() > 0.01 && m.imag() < 0.1) steering = m;        // slow turning
+    if (m.real() < pendulum.real()) pendulum = m;         // the fastest
+    if (m.imag() > 1.0 && m.imag() < 2.5) tilt = m;       // near the tilt's own ≈1.7 rad/s
+    if (m.imag() > 0.01 && m.imag() < 0.1) steering = m;  // the slow turn
   }
   std::cout << "[ result   ] pendulum " << pendulum << ", tilt " << tilt << ", steering "
             << steering << "\n";
@@ -240,7 +240,7 @@ TEST(NormaSimulation, PaperLoopModesOnThePathStart) {
   EXPECT_NEAR(pendulum.imag(), 0.0, 1e-9);
   EXPECT_NEAR(tilt.real(), -0.048, 5e-4);
   EXPECT_NEAR(tilt.imag(), 1.68, 5e-3);
-  EXPECT_NEAR(steering.real(), 5.5e-6, 0.05e-6);  // undamped (slightly unstable)
+  EXPECT_NEAR(steering.real(), 5.5e-6, 0.05e-6);  // undamped, very slightly unstable
   EXPECT_NEAR(steering.imag(), 0.0290, 5e-5);
 }
 

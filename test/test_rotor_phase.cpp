@@ -176,8 +176,7 @@ TEST(RotorPhase, RadiiForUnitShiftAtInertiaRatio2p5) {
 TEST(RotorPhase, HolonomyNearTheEquatorLimitChangesFast) {
   // Errata S7: eq 30 divides by z(θ), so near a = R/√2 the heading rate grows like 1/z; for k = 5
   // one leaf's holonomy changes by "~5 rad" per 0.0005 R of radius at a = 0.6995 R.
-  const double change =
-      leafPhase(5.0, 0.69975).holonomy - leafPhase(5.0, 0.69925).holonomy;
+  const double change = leafPhase(5.0, 0.69975).holonomy - leafPhase(5.0, 0.69925).holonomy;
   EXPECT_TRUE(roundsTo(std::abs(change), 5.0, 0.5)) << change;
 }
 
