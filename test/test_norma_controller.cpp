@@ -190,13 +190,13 @@ TEST(NormaSimulation, DefaultTolerancesStayWithinOneMillimetre) {
 // robot is at rest, where ψ̇ = −θ̇ S_φ (eq 6) does not couple the tilt to the heading at first
 // order; so the operating point is the robot on the path, heading along it and rolling at its
 // initial speed (θ̇ = α̇ = ‖ṙ_d(0)‖ / R, pendulum hanging, integrals zero).
-Eigen::VectorXcd paperLoopModesOnThePathStart() {
+Eigen::Matrix<std::complex<double>, 14, 1> paperLoopModesOnThePathStart() {
   const ClosedLoopConfig config;
   const NormaParameters parameters;
   const NormaDynamics dynamics(parameters, config.variant);
   const NormaController controller(parameters, config.controller, config.gains);
   const PathPoint start = lissajousPath(0.0);
-  constexpr int kStates = 14;
+  constexpr int kStates = 14;  // q, q̇, X, Y, ψ, three integrals
   const auto rates = [&](const Eigen::VectorXd& z) {
     const Vector4 q = z.segment<4>(0), qd = z.segment<4>(4);
     const ControlOutput u =
@@ -213,7 +213,7 @@ Eigen::VectorXcd paperLoopModesOnThePathStart() {
   Eigen::VectorXd z0 = Eigen::VectorXd::Zero(kStates);
   z0(4) = z0(5) = std::hypot(start.x_dot, start.y_dot) / parameters.R;
   z0(10) = pathStartHeading();
-  Eigen::MatrixXd jacobian(kStates, kStates);
+  Eigen::Matrix<double, kStates, kStates> jacobian;
   const double h = 1e-6;  // the modes agree to the digits asserted for h = 1e-4 ... 1e-7
   for (int j = 0; j < kStates; ++j) {
     Eigen::VectorXd plus = z0, minus = z0;
@@ -221,11 +221,11 @@ Eigen::VectorXcd paperLoopModesOnThePathStart() {
     minus(j) -= h;
     jacobian.col(j) = (rates(plus) - rates(minus)) / (2 * h);
   }
-  return Eigen::EigenSolver<Eigen::MatrixXd>(jacobian).eigenvalues();
+  return Eigen::EigenSolver<Eigen::Matrix<double, kStates, kStates>>(jacobian).eigenvalues();
 }
 
 TEST(NormaSimulation, PaperLoopModesOnThePathStart) {
-  const Eigen::VectorXcd modes = paperLoopModesOnThePathStart();
+  const auto modes = paperLoopModesOnThePathStart();
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::complex<double> pendulum(0.0, 0.0), tilt(nan, nan), steering(nan, nan);
   for (int i = 0; i < modes.size(); ++i) {
