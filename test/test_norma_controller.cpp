@@ -182,8 +182,6 @@ TEST(NormaSimulation, DefaultTolerancesStayWithinOneMillimetre) {
   EXPECT_GT(reference.back().error, 1.0);  // the paper's run, far from its path (errata N9)
 }
 
-// The target for the tracking controller on eq 52: over t >= 650 s, RMS ‖e‖ < 0.10 m and
-// max ‖e‖ < 0.30 m, with the slider within ±0.1 m (the stroke R − δ0 each way).
 // docs/errata.md N9: the paper's closed loop (eqs 48-52, Table 1) linearised at the start of the
 // path, by central differences of the right-hand side runClosedLoop integrates (state q, q̇, X, Y,
 // ψ and the three PID integrals; the path point held at t = 0). At the scenario's own start the
@@ -244,6 +242,8 @@ TEST(NormaSimulation, PaperLoopModesOnThePathStart) {
   EXPECT_NEAR(steering.imag(), 0.0290, 5e-5);
 }
 
+// The target for the tracking controller on eq 52: over t >= 650 s, RMS ‖e‖ < 0.10 m and
+// max ‖e‖ < 0.30 m, with the slider within ±0.1 m (the stroke R − δ0 each way).
 TEST(NormaSimulation, TrackingControllerMeetsTarget) {
   ClosedLoopConfig config;
   config.controller = ControllerKind::kTracking;
