@@ -81,14 +81,11 @@ void TerrainSimulation::step(double dt) {
         desired);
     dxdt = toOde(kinematics_.realisedStateRate(state, geometry, rates));
   };
+  OdeState x = toOde(state_);
+  Stepper().do_step(closed_loop, x, t_, dt);
   const double increment = dt - t_compensation_;
   const double next_t = t_ + increment;
-  // The step the clock takes, exact (Sterbenz): t_ + step is next_t to the bit, so the last
-  // stage's desired point is the next step's first, found in the cache instead of lifted again.
-  const double step = next_t - t_;
-  t_compensation_ = step - increment;
-  OdeState x = toOde(state_);
-  Stepper().do_step(closed_loop, x, t_, step);
+  t_compensation_ = (next_t - t_) - increment;
   t_ = next_t;
   state_ = checkedResult(kinematics_, x, t_);
 }
