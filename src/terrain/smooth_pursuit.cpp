@@ -93,8 +93,9 @@ Eigen::Vector3d SmoothPursuitController::desiredVelocity(
 DriveRates SmoothPursuitController::command(const ContactGeometry& geometry, double tilt,
                                             const TrackingError& error,
                                             const Eigen::Vector3d& desired_velocity) const {
-  if (!std::isfinite(error.norm) || !error.error.allFinite() || !desired_velocity.allFinite() ||
-      !std::isfinite(tilt)) {
+  const Eigen::Vector3d& e = error.error;
+  const Eigen::Vector3d& w = desired_velocity;
+  if (!allFinite(error.norm, e.x(), e.y(), e.z(), w.x(), w.y(), w.z(), tilt)) {
     rejectInput(tilt, error, desired_velocity);
   }
   // The robot moves in the tangent plane: u's components along h and l, u = w + scale k.

@@ -5,12 +5,13 @@
 #include <stdexcept>
 
 #include "spherical_robots/core/sin_cos.hpp"
+#include "spherical_robots/core/validation.hpp"
 
 namespace spherical_robots::terrain {
 namespace {
 
 void requireFiniteGradient(const Eigen::Vector2d& gradient) {
-  if (!gradient.allFinite()) {
+  if (!allFinite(gradient.x(), gradient.y())) {
     throw std::invalid_argument("tangent frame: surface gradient is not finite");
   }
 }
