@@ -73,7 +73,8 @@ SmoothPursuitController::SmoothPursuitController(RobotType type, const SmoothPur
 
 // Linear in e_t near p_d (stiffer along the path, where only the speed responds, than across,
 // where types that must turn respond through their heading), never faster than v_c far from it.
-SmoothPursuitController::Correction SmoothPursuitController::correction(
+// Inline: command() calls it at every RK stage.
+inline SmoothPursuitController::Correction SmoothPursuitController::correction(
     const TrackingError& error, const Eigen::Vector3d& desired_velocity) const {
   const Eigen::Vector3d along =
       desired_velocity *
