@@ -9,8 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <random>
+#include <vector>
 
 #include "spherical_robots/core/sin_cos.hpp"
 
@@ -129,6 +131,27 @@ TEST(SinCos, LargeAndNonFiniteArgumentsAreStdSinAndCos) {
                          std::numeric_limits<double>::quiet_NaN()}) {
     EXPECT_TRUE(std::isnan(sinCos(x).sin)) << "x = " << x;
     EXPECT_TRUE(std::isnan(sinCos(x).cos)) << "x = " << x;
+  }
+}
+
+// The two-argument form is the scalar one in two lanes: the same to the bit, handed-over
+// arguments and signed zeros included.
+TEST(SinCos, TwoArgumentsAreTheScalarResultsToTheBit) {
+  const auto expectSame = [](const SinCos& got, double x) {
+    const SinCos scalar = sinCos(x);
+    EXPECT_TRUE(std::memcmp(&got.sin, &scalar.sin, sizeof(double)) == 0) << "x = " << x;
+    EXPECT_TRUE(std::memcmp(&got.cos, &scalar.cos, sizeof(double)) == 0) << "x = " << x;
+  };
+  std::mt19937_64 generator(59);
+  std::uniform_real_distribution<double> uniform(-5.1e4, 5.1e4);
+  std::vector<double> arguments = {0.0, -0.0, 1e-300, -1e-20, 5.2e4, -3e9,
+                                   std::numeric_limits<double>::infinity(),
+                                   std::numeric_limits<double>::quiet_NaN()};
+  for (int i = 0; i < 100000; ++i) arguments.push_back(uniform(generator) / (i % 2 ? 1.0 : 4e3));
+  for (std::size_t i = 0; i + 1 < arguments.size(); ++i) {
+    const auto [first, second] = sinCos(arguments[i], arguments[i + 1]);
+    expectSame(first, arguments[i]);
+    expectSame(second, arguments[i + 1]);
   }
 }
 

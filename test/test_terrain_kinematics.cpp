@@ -279,6 +279,16 @@ TEST_P(KinematicsOnCosine, RejectsNonFiniteRatesAndStates) {
   }
 }
 
+// The checks test the sum of the values first (core/validation.hpp, allFinite): values whose sum
+// overflows are finite all the same, and infinities of both signs, whose sum is NaN, are not.
+TEST_P(KinematicsOnCosine, FiniteRatesWhoseSumOverflowsAreFinite) {
+  const TerrainState ok{0.3, -0.7, 0.1, 0.2};
+  EXPECT_NO_THROW(kin_.realisedRates(ok, DriveRates{1e308, 1e308, 1e308}));
+  EXPECT_NO_THROW(kin_.realisedRates(ok, DriveRates{-1e308, -1e308, 0}));
+  EXPECT_THROW(kin_.realisedRates(ok, DriveRates{kInf, -kInf, 0}), std::invalid_argument);
+  EXPECT_THROW(kin_.realisedRates(ok, DriveRates{1e308, 1e308, kNaN}), std::invalid_argument);
+}
+
 TEST_P(KinematicsOnCosine, KeepsTheContactPointExactlyOnTheSurfaceOverALongRun) {
   // z0 is never integrated (conventions.md), so it cannot drift: 100 s of RK4 with held rates.
   // RS holds a small tilt: it then runs circles of radius R cot(0.2) ~ 1 m (at its pi/3 limit

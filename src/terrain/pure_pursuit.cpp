@@ -47,7 +47,8 @@ DriveRates PurePursuitController::command(const ContactGeometry&, double, const 
 
 DriveRates PurePursuitController::command(const TrackingError& error,
                                           const Eigen::Vector3d& desired_velocity) const {
-  if (!std::isfinite(error.norm) || !std::isfinite(error.zeta) || !desired_velocity.allFinite()) {
+  const Eigen::Vector3d& w = desired_velocity;
+  if (!allFinite(error.norm, error.zeta, w.x(), w.y(), w.z())) {
     throw std::invalid_argument("pure pursuit: tracking error or desired velocity not finite");
   }
   const double normalised = error.norm / (gains_.k_e + error.norm);

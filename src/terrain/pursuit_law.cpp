@@ -1,4 +1,5 @@
 #include "spherical_robots/terrain/pursuit_law.hpp"
+#include "spherical_robots/core/validation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +10,7 @@ namespace spherical_robots::terrain {
 // Eq 53, and eq 54 signed: atan2 of e_t's components along l and h.
 TrackingError trackingError(const ContactGeometry& geometry, const Eigen::Vector3d& desired,
                             bool with_zeta) {
-  if (!desired.allFinite()) throw std::invalid_argument("tracking error: desired point not finite");
+  if (!allFinite(desired.x(), desired.y(), desired.z())) throw std::invalid_argument("tracking error: desired point not finite");
   TrackingError result;
   result.error = desired - geometry.contact_point;
   result.norm = result.error.norm();

@@ -73,7 +73,8 @@ SmoothPursuitController::SmoothPursuitController(RobotType type, const SmoothPur
 
 // Linear in e_t near p_d (stiffer along the path, where only the speed responds, than across,
 // where types that must turn respond through their heading), never faster than v_c far from it.
-SmoothPursuitController::Correction SmoothPursuitController::correction(
+// Inline: command() calls it at every RK stage.
+inline SmoothPursuitController::Correction SmoothPursuitController::correction(
     const TrackingError& error, const Eigen::Vector3d& desired_velocity) const {
   const Eigen::Vector3d along =
       desired_velocity *
@@ -81,33 +82,44 @@ SmoothPursuitController::Correction SmoothPursuitController::correction(
   const Eigen::Vector3d linear = gains_.cross_gain * error.error +
                                  (gains_.along_gain - gains_.cross_gain) *
                                      error.error.dot(along) * along;
-  return {linear, gains_.approach_speed / (gains_.approach_speed + linear.norm())};
+  return {linear, gains_.approach_speed + linear.norm()};
 }
 
 Eigen::Vector3d SmoothPursuitController::desiredVelocity(
     const TrackingError& error, const Eigen::Vector3d& desired_velocity) const {
   const Correction c = correction(error, desired_velocity);
-  return desired_velocity + c.scale * c.linear;
+  return desired_velocity + (gains_.approach_speed / c.denominator) * c.linear;
 }
 
 DriveRates SmoothPursuitController::command(const ContactGeometry& geometry, double tilt,
                                             const TrackingError& error,
                                             const Eigen::Vector3d& desired_velocity) const {
-  if (!std::isfinite(error.norm) || !error.error.allFinite() || !desired_velocity.allFinite() ||
-      !std::isfinite(tilt)) {
+  const Eigen::Vector3d& e = error.error;
+  const Eigen::Vector3d& w = desired_velocity;
+  if (!allFinite(error.norm, e.x(), e.y(), e.z(), w.x(), w.y(), w.z(), tilt)) {
     rejectInput(tilt, error, desired_velocity);
   }
-  // The robot moves in the tangent plane: u's components along h and l, u = w + scale k.
+  // The robot moves in the tangent plane: u's components along h and l. With D = v_c + |k|,
+  // D u = D w + v_c k has u's direction without a division by D, which the turn, at the end of
+  // the chain of operations from one RK stage to the next, then does not wait for.
   const Correction c = correction(error, desired_velocity);
   const Eigen::Vector3d& h = geometry.heading_frame.col(0);
   const Eigen::Vector3d& l = geometry.heading_frame.col(1);
-  const double forward = desired_velocity.dot(h) + c.scale * c.linear.dot(h);
-  const double leftward = desired_velocity.dot(l) + c.scale * c.linear.dot(l);
-  // |u| in the plane, regularised: u's direction means nothing where |u| < v_e.
-  const double speed =
-      std::sqrt(forward * forward + leftward * leftward + gains_.min_speed * gains_.min_speed);
-  // Turn towards u: k_h times the sine of the angle from h to u.
-  const double turn = gains_.heading_gain * leftward / speed;
+  const double approach_speed = gains_.approach_speed;
+  const double forward_times_d =
+      c.denominator * desired_velocity.dot(h) + approach_speed * c.linear.dot(h);
+  const double leftward_times_d =
+      c.denominator * desired_velocity.dot(l) + approach_speed * c.linear.dot(l);
+  const double inverse_d = 1.0 / c.denominator;
+  const double forward = forward_times_d * inverse_d;
+  const double leftward = leftward_times_d * inverse_d;
+  // Turn towards u: k_h times the sine of the angle from h to u, u_l / sqrt(u_h^2 + u_l^2 + v_e^2)
+  // (|u| in the plane regularised: u's direction means nothing where |u| < v_e), all times D.
+  const double floor_times_d = gains_.min_speed * c.denominator;
+  const double turn =
+      gains_.heading_gain * leftward_times_d /
+      std::sqrt(forward_times_d * forward_times_d + leftward_times_d * leftward_times_d +
+                floor_times_d * floor_times_d);
   DriveRates rates;
   switch (type_) {
     case RobotType::ThreeAxisRolling:  // the contact point moves with R theta' h - R phi' l (eq 33)

@@ -17,13 +17,14 @@ CosineSurface::CosineSurface(double amplitude, double frequency)
 
 // Eq 59 and its derivatives.
 SurfacePoint CosineSurface::evaluate(double x, double y) const {
-  const auto [sin_x, cos_x] = sinCos(frequency_ * x);
-  const auto [sin_y, cos_y] = sinCos(frequency_ * y);
+  const auto [along_x, along_y] = sinCos(frequency_ * x, frequency_ * y);
+  const double slope = -amplitude_ * frequency_;
+  const double curvature = slope * frequency_;
   SurfacePoint point;
-  point.height = amplitude_ * (cos_x + cos_y - 2.0);
-  point.gradient = -amplitude_ * frequency_ * Eigen::Vector2d(sin_x, sin_y);
-  point.hessian(0, 0) = -amplitude_ * frequency_ * frequency_ * cos_x;
-  point.hessian(1, 1) = -amplitude_ * frequency_ * frequency_ * cos_y;
+  point.height = amplitude_ * (along_x.cos + along_y.cos - 2.0);
+  point.gradient = slope * Eigen::Vector2d(along_x.sin, along_y.sin);
+  point.hessian(0, 0) = curvature * along_x.cos;
+  point.hessian(1, 1) = curvature * along_y.cos;
   return point;
 }
 

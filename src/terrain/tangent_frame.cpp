@@ -5,12 +5,13 @@
 #include <stdexcept>
 
 #include "spherical_robots/core/sin_cos.hpp"
+#include "spherical_robots/core/validation.hpp"
 
 namespace spherical_robots::terrain {
 namespace {
 
 void requireFiniteGradient(const Eigen::Vector2d& gradient) {
-  if (!gradient.allFinite()) {
+  if (!allFinite(gradient.x(), gradient.y())) {
     throw std::invalid_argument("tangent frame: surface gradient is not finite");
   }
 }
@@ -29,7 +30,11 @@ Eigen::Vector3d surfaceNormal(const Eigen::Vector2d& gradient) {
 // n = (-f_x, -f_y, 1) / L, c = 1 / L and [k]x^2 / (1 + c) = -[f_i f_j] / (L (L + 1)) in the
 // plane: one division d = 1 / (L (L + 1)) gives both, c = (L + 1) d (the closed loop builds
 // this frame at every RK stage, where divisions are what its time goes to).
-Eigen::Matrix3d tangentFrame(const Eigen::Vector2d& gradient) {
+namespace {
+
+// Declared inline so that GCC inlines it into headingFrame, at every RK stage of a run, instead of
+// returning the nine entries through memory.
+inline Eigen::Matrix3d minimalRotation(const Eigen::Vector2d& gradient) {
   requireFiniteGradient(gradient);
   const double gx = gradient.x();
   const double gy = gradient.y();
@@ -44,6 +49,10 @@ Eigen::Matrix3d tangentFrame(const Eigen::Vector2d& gradient) {
   return frame;
 }
 
+}  // namespace
+
+Eigen::Matrix3d tangentFrame(const Eigen::Vector2d& gradient) { return minimalRotation(gradient); }
+
 double tangentFrameSpin(const Eigen::Vector3d& normal, const Eigen::Vector3d& normal_rate) {
   return normal_rate.cross(normal).z() / (1.0 + normal.z());
 }
@@ -53,7 +62,7 @@ Eigen::Matrix3d headingFrame(const Eigen::Vector2d& gradient, double psi) {
   if (!std::isfinite(psi)) {
     throw std::invalid_argument("heading frame: psi is not finite");
   }
-  const Eigen::Matrix3d tangent = tangentFrame(gradient);
+  const Eigen::Matrix3d tangent = minimalRotation(gradient);
   const SinCos turn = sinCos(psi);
   Eigen::Matrix3d heading;
   heading.col(0) = turn.cos * tangent.col(0) + turn.sin * tangent.col(1);

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "spherical_robots/core/validation.hpp"
 #include "spherical_robots/terrain/tangent_frame.hpp"
 
 namespace spherical_robots::terrain {
@@ -27,15 +28,13 @@ namespace {
 }
 
 void requireFinite(const TerrainState& state) {
-  if (!std::isfinite(state.x) || !std::isfinite(state.y) || !std::isfinite(state.psi) ||
-      !std::isfinite(state.phi)) {
+  if (!allFinite(state.x, state.y, state.psi, state.phi)) {
     rejectState(state);
   }
 }
 
 void requireFinite(const DriveRates& rates) {
-  if (!std::isfinite(rates.roll_rate) || !std::isfinite(rates.lateral_rate) ||
-      !std::isfinite(rates.turn_rate)) {
+  if (!allFinite(rates.roll_rate, rates.lateral_rate, rates.turn_rate)) {
     rejectRates(rates);
   }
 }

@@ -47,11 +47,14 @@ bool looksLikeOption(const std::string& token) {
   return token.size() > 2 && token.compare(0, 2, "--") == 0;
 }
 
-/// Appends formatNumber(value) without allocating.
-void appendNumber(std::string& text, double value) {
-  char digits[32];  // the longest shortest-round-trip double is 24 characters
+/// The longest shortest-round-trip double, "-1.2345678901234567e-308", is 24 characters.
+constexpr std::size_t kMaxNumberLength = 24;
+
+/// Writes formatNumber(value) at first, which has room for kMaxNumberLength characters; returns
+/// the end of what it wrote.
+char* writeNumber(char* first, double value) {
   // + 0.0 turns -0 into 0: the sign of a zero carries no meaning in the output.
-  text.append(digits, std::to_chars(digits, digits + sizeof digits, value + 0.0).ptr);
+  return std::to_chars(first, first + kMaxNumberLength, value + 0.0).ptr;
 }
 
 std::string valueSyntax(const OptionSpec& spec) {
@@ -382,9 +385,8 @@ void OutputFile::commit() {
 }
 
 std::string formatNumber(double value) {
-  std::string text;
-  appendNumber(text, value);
-  return text;
+  char digits[kMaxNumberLength];
+  return std::string(digits, writeNumber(digits, value));
 }
 
 CsvWriter::CsvWriter(std::ostream& out, std::vector<std::string> columns)
@@ -398,18 +400,22 @@ void CsvWriter::row(std::initializer_list<double> values) {
     throw std::logic_error("CSV row of " + std::to_string(values.size()) + " values for " +
                            std::to_string(columns_.size()) + " columns");
   }
-  line_.clear();
+  // The numbers straight into a buffer with room for the longest row (sized once), not
+  // appended one by one: 34,000 numbers in a terrain run.
+  line_.resize(values.size() * (kMaxNumberLength + 1));
+  char* const first = line_.data();
+  char* end = first;
   std::size_t column = 0;
   for (const double value : values) {
     if (!std::isfinite(value)) {
       throw std::runtime_error("CSV column " + columns_[column] + " would hold " +
                                formatNumber(value));
     }
-    if (column++ > 0) line_ += ',';
-    appendNumber(line_, value);
+    if (column++ > 0) *end++ = ',';
+    end = writeNumber(end, value);
   }
-  line_ += '\n';
-  out_.write(line_.data(), static_cast<std::streamsize>(line_.size()));
+  *end++ = '\n';
+  out_.write(first, static_cast<std::streamsize>(end - first));
 }
 
 JsonWriter::JsonWriter(std::ostream& out) : out_(out), closers_("}") { out_ << '{'; }

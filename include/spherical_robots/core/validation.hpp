@@ -41,6 +41,15 @@ inline void requireAllFinite(std::initializer_list<std::pair<double, std::string
   for (const auto& [value, what] : fields) requireFinite(value, what);
 }
 
+/// Whether every value is finite, by one test of their sum where it is finite (a NaN or an infinity
+/// makes the sum NaN or infinite): the closed loop checks some 20 values at every RK stage, and a
+/// test each cost it 9 % of its instructions. Each value is tested only if the sum overflowed.
+template <typename... Values>
+inline bool allFinite(double first, Values... rest) {
+  return std::isfinite((first + ... + rest)) ||
+         (std::isfinite(first) && (std::isfinite(rest) && ...));
+}
+
 /// @throw std::invalid_argument "<what> must be finite and >= <minimum>, got <value>" unless it is.
 void requireAtLeast(double value, double minimum, std::string_view what);
 

@@ -66,11 +66,12 @@ class SmoothPursuitController final : public PursuitController {
                      const Eigen::Vector3d& desired_velocity) const override;
 
  private:
-  /// c = scale * linear (desiredVelocity's) in its two factors: command() projects linear onto
-  /// the heading frame while scale's square root and division, the slow part, are under way.
+  /// c = v_c k / D (desiredVelocity's) in its factors: command() projects k onto the heading
+  /// frame while D's square root, the slow part, is under way, and divides by D only where the
+  /// direction of u does not need it.
   struct Correction {
     Eigen::Vector3d linear;  ///< k [m/s]
-    double scale;            ///< v_c / (v_c + |k|) [-]
+    double denominator;      ///< D = v_c + |k| [m/s]
   };
   Correction correction(const TrackingError& error, const Eigen::Vector3d& desired_velocity) const;
 
