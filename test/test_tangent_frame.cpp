@@ -61,11 +61,17 @@ Eigen::Matrix3d printedEq23(const Eigen::Vector2d& g) {
 // axis of eq 13). The printed A.6 has sign/index typos in (0,2), (2,0), (2,1): the correct entries
 // are 2 q_j q_r, -2 q_j q_r, +2 q_i q_r. Quaternion from A.1 and the text below A.6:
 // q_r = cos(gamma/2), q_i = s f_y sin(gamma/2), q_j = -s f_x sin(gamma/2).
-Eigen::Matrix3d correctedA6(const Eigen::Vector2d& g) {
+struct AppendixQuaternion {
+  double qr, qi, qj;  // q_k = 0
+};
+AppendixQuaternion appendixQuaternion(const Eigen::Vector2d& g) {
   const double s = 1.0 / g.norm();
   const double gamma = std::atan2(g.norm(), 1.0);  // eq 16: atan2(s^-1, 1)
-  const double qr = std::cos(gamma / 2), qi = s * g.y() * std::sin(gamma / 2),
-               qj = -s * g.x() * std::sin(gamma / 2);
+  return {std::cos(gamma / 2), s * g.y() * std::sin(gamma / 2), -s * g.x() * std::sin(gamma / 2)};
+}
+
+Eigen::Matrix3d correctedA6(const Eigen::Vector2d& g) {
+  const auto [qr, qi, qj] = appendixQuaternion(g);
   Eigen::Matrix3d r;
   r << 1 - 2 * qj * qj, 2 * qi * qj, 2 * qj * qr,  //
       2 * qi * qj, 1 - 2 * qi * qi, -2 * qi * qr,  //
@@ -144,10 +150,8 @@ TEST_P(TangentFrameOnSlope, EqualsEigenAxisAngleAndTheCorrectedAppendixA6) {
 // not rotations, and neither is eq 23; the corrected A.6 is, to 1e-16.
 TEST(AppendixA, PrintedA5AndA6AreNotRotationsAtTheErrataPoint) {
   const Eigen::Vector2d g(0.3, -0.2);
-  const double s = 1.0 / g.norm();
-  const double gamma = std::atan2(g.norm(), 1.0);  // eq 16
-  const double qr = std::cos(gamma / 2), qi = s * g.y() * std::sin(gamma / 2),
-               qj = -s * g.x() * std::sin(gamma / 2), qk = 0.0;
+  const auto [qr, qi, qj] = appendixQuaternion(g);
+  const double qk = 0.0;
   Eigen::Matrix3d a5, a6;
   a5 << 1 - 2 * (qj * qj + qk * qk), 2 * (qi * qj - qk * qr), 2 * (qi * qk - qj * qr),  //
       2 * (qi * qj - qk * qr), 1 - 2 * (qi * qi + qk * qk), 2 * (qj * qk - qi * qr),    //
