@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Benchmarks the terrain batch run (200 s, dt 5 ms: 40,000 RK4 steps; 2,001 CSV rows):
-#  1. bench_terrain (Google Benchmark): the sphere_sim command in-process, and the run without CSV;
+#  1. bench_terrain (Google Benchmark): the sphere_sim command in-process, the run without CSV, and
+#     a lower bound for the run (BM_TerrainStageFloor: the 3R smooth loop as straight-line code);
 #     bench_freebot: FreeBOT IK over 10,000 random reachable targets of a 3-joint chain;
 #     bench_rotor: the two-rotor sphere's n-step planner (k 0..5 x n 1..5; target < 50 ms each);
 #  2. the CPU time (user + sys) of whole `sphere_sim` processes run from the install space without
