@@ -2,7 +2,11 @@
 # Regenerates every figure and table of docs/results.md from the built package (sphere_sim, and
 # with --with-rviz the launched stacks): the one command docs/results.md names.
 #
-#   scripts/make_results.sh [--with-rviz]
+#   scripts/make_results.sh [--with-rviz] [--out-dir DIR]
+#
+# Writes into docs/ (the tracked figures; `git diff` shows what moved) unless --out-dir DIR is
+# given: then DIR/figures gets the same files (the tables are printed, not written), to compare
+# with docs/ without touching it.
 #
 # Batch part (~2 min): terrain_results.py (16 terrain runs), rotor_figures.py (Figs 9, 10),
 # freebot_results.py (Table II targets), the two 1300 s Norma runs and plot_norma_run.py.
@@ -12,6 +16,17 @@ set -euo pipefail
 sim=$SR_ROOT/install/spherical_robots/lib/spherical_robots/sphere_sim
 [ -x "$sim" ] || { sr_log "no $sim: build first (scripts/run_tests.sh or scripts/run_demo.sh)"; exit 1; }
 docs=$SR_ROOT/docs
+with_rviz=false
+while [ $# -gt 0 ]; do
+  case $1 in
+    --with-rviz) with_rviz=true; shift ;;
+    --out-dir)
+      [ $# -ge 2 ] || { sr_log "--out-dir needs a directory"; exit 2; }
+      docs=$(realpath -m "$2"); shift 2 ;;
+    *) sr_log "unknown argument '$1' (usage: scripts/make_results.sh [--with-rviz] [--out-dir DIR])"; exit 2 ;;
+  esac
+done
+mkdir -p "$docs/figures"
 work=$(mktemp -d /tmp/make_results.XXXXXX)
 trap 'rm -rf "$work"' EXIT
 
@@ -26,7 +41,7 @@ norma() {
 }
 sr_step "Norma: paper controller, 1300 s" norma paper
 sr_step "Norma: tracking controller, 1300 s" norma tracking
-if [ "${1:-}" = "--with-rviz" ]; then
+if $with_rviz; then
   sr_step "rviz screenshots of recorded stack runs" "$SR_ROOT/scripts/rviz_figures.sh" "$docs/figures"
 fi
-sr_log "done: docs/figures and the tables printed above (copy changed numbers into docs/results.md)"
+sr_log "done: $docs/figures and the tables printed above (copy changed numbers into docs/results.md)"
