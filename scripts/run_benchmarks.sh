@@ -6,11 +6,12 @@
 #     bench_rotor: the two-rotor sphere's n-step planner (k 0..5 x n 1..5; target < 50 ms each);
 #  2. the CPU time (user + sys) of whole `sphere_sim` processes run from the install space without
 #     --config, each against its target (issue 13): one 200 s terrain circle run per robot type
-#     and tracking law (10 ms, with --law smooth), its fixed costs alone (start-up: --help;
-#     start-up and configuration: --duration 0), the rotor planner's slowest problems (50 ms) and
-#     the Norma paper run (40 ms).
+#     and tracking law (10 ms, with --law smooth), the floor's (bench_terrain_floor: the 3R smooth
+#     run and its CSV as straight-line code, nothing read or checked), its fixed costs alone
+#     (start-up: --help; start-up and configuration: --duration 0), the rotor planner's slowest
+#     problems (50 ms) and the Norma paper run (40 ms).
 # usage: scripts/run_benchmarks.sh [REPEATS]    (processes per robot type, default 20)
-# SR_BIN_DIR=DIR uses sphere_sim, bench_terrain and bench_rotor from DIR instead of building the
+# SR_BIN_DIR=DIR uses the programs (sphere_sim, the bench_* ones) from DIR instead of building the
 # workspace.
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/env.sh"
@@ -23,7 +24,7 @@ else
   sr_step "build (colcon, Release; incremental)" sr_build
   bin=install/spherical_robots/lib/spherical_robots
 fi
-for program in sphere_sim bench_terrain bench_freebot bench_rotor; do
+for program in sphere_sim bench_terrain bench_terrain_floor bench_freebot bench_rotor; do
   [ -x "$bin/$program" ] || { sr_log "no $bin/$program (is libbenchmark-dev installed?)"; exit 1; }
 done
 
@@ -32,15 +33,16 @@ sr_step "Google Benchmark: bench_freebot (IK, 10,000 targets per case)" "$bin/be
 sr_step "Google Benchmark: bench_rotor" "$bin/bench_rotor"
 
 sr_log "CPU time of whole sphere_sim processes ($repeats per case)"
-python3 - "$bin/sphere_sim" "$repeats" <<'EOF'
+python3 - "$bin/sphere_sim" "$bin/bench_terrain_floor" "$repeats" <<'EOF'
 import os, statistics, subprocess, sys, tempfile
 
-sim, repeats = sys.argv[1], int(sys.argv[2])
+sim, floor, repeats = sys.argv[1], sys.argv[2], int(sys.argv[3])
 out = os.path.join(tempfile.mkdtemp(prefix='sphere_sim_bench.'), 'run.out')
 cases = [('terrain %s circle 200 s, %s' % (robot, law),
           ['terrain', '--robot', robot, '--path', 'circle', '--law', law, '--duration', '200'],
           10.0 if law == 'smooth' else None)
          for law in ('smooth', 'paper') for robot in ('3R', '2R', 'RT', 'RS')]
+cases += [('floor: bench_terrain_floor (3R smooth)', [floor], 10.0)]
 cases += [('start-up (sphere_sim --help)', ['--help'], None),
           ('start-up + configuration (terrain, 0 s)',
            ['terrain', '--robot', '3R', '--path', 'circle', '--law', 'smooth', '--duration', '0'],
@@ -51,7 +53,10 @@ cases += [('rotor-plan k %g, n %d' % (k, n),
 cases += [('norma paper run, 1300 s', ['norma'], 40.0)]
 print('%-42s %12s %10s %10s %7s' % ('case', 'CPU ms/proc', 'min ms', 'target ms', 'ratio'))
 for label, case_args, target_ms in cases:
-    args = [sim] + case_args + ([] if case_args == ['--help'] else ['--out', out])
+    if case_args == [floor]:
+        args = [floor, out]
+    else:
+        args = [sim] + case_args + ([] if case_args == ['--help'] else ['--out', out])
     cpu_ms = []
     for _ in range(repeats):
         child = subprocess.Popen(args, stdout=subprocess.DEVNULL)
