@@ -336,6 +336,55 @@ TEST_F(SphereSimTest, LawSelectsTheTrackingLaw) {
   }
 }
 
+// Issue 13 let the paper's law use faster arithmetic on one condition: where it chatters its
+// trajectories may move by rounding, but its first |e_t| < 0.1 m must stay within 0.1 s and its
+// mean |e_t| after 40 s within 1 mm of the table it was filed against. That table (the terrain
+// table of docs/results.md at 7ff3615^, rows logged at 10 Hz, printed to 0.01 s and 0.1 mm) is
+// the reference here, not today's output; the figures are taken from the CSV as
+// scripts/terrain_results.py takes them.
+TEST_F(SphereSimTest, PaperLawStaysWithinIssue13sAllowanceOfTheTableItWasFiledAgainst) {
+  struct Filed {
+    const char* robot;
+    const char* path;
+    const char* model;
+    double first_below;  // [s]
+    double mean_after;   // [m]
+  };
+  const Filed filed[] = {
+      {"3R", "circle", "paper", 6.40, 0.0001},   {"3R", "circle", "rolling", 6.60, 0.0097},
+      {"3R", "diamond", "paper", 5.10, 0.0007},  {"3R", "diamond", "rolling", 5.20, 0.0034},
+      {"2R", "circle", "paper", 5.30, 0.0405},   {"2R", "circle", "rolling", 5.40, 0.0401},
+      {"2R", "diamond", "paper", 4.30, 0.0365},  {"2R", "diamond", "rolling", 4.30, 0.0346},
+      {"RT", "circle", "paper", 8.00, 0.0000},   {"RT", "circle", "rolling", 8.20, 0.0113},
+      {"RT", "diamond", "paper", 7.50, 0.0050},  {"RT", "diamond", "rolling", 7.50, 0.0074},
+      {"RS", "circle", "paper", 19.90, 0.0026},  {"RS", "circle", "rolling", 17.90, 0.0334},
+      {"RS", "diamond", "paper", 15.00, 0.0686}, {"RS", "diamond", "rolling", 15.40, 0.1012}};
+  constexpr double kPrinted = 0.5e-4;  // the table's rounding of the mean [m]
+  for (const Filed& f : filed) {
+    const std::string name = std::string(f.robot) + " " + f.path + " " + f.model;
+    const Process process = terrain(
+        {"--robot", f.robot, "--path", f.path, "--model", f.model, "--law", "paper"});
+    ASSERT_EQ(process.status, 0) << name << ": " << process.err;
+    const Csv csv = readCsv(out_);
+    double first_below = std::nan("");
+    double sum_after = 0.0;
+    int count_after = 0;
+    for (std::size_t i = 0; i < csv.rows.size(); ++i) {
+      const double t = csv.at(i, "t");
+      const double error = csv.at(i, "e_norm");
+      if (std::isnan(first_below) && error < 0.1) first_below = t;
+      if (t >= 40.0) {
+        sum_after += error;
+        ++count_after;
+      }
+    }
+    ASSERT_GT(count_after, 0) << name;
+    EXPECT_LE(std::abs(first_below - f.first_below), 0.1 + 1e-9) << name << ": " << first_below;
+    EXPECT_LE(std::abs(sum_after / count_after - f.mean_after), 1e-3 + kPrinted)
+        << name << ": " << sum_after / count_after;
+  }
+}
+
 TEST_F(SphereSimTest, SampledLoopRunsAtTheStacksStepsAndStartsWhereTheContinuousRunStarts) {
   const Process sampled = terrain({"--robot", "RS", "--path", "diamond", "--law", "smooth",
                                    "--loop", "sampled", "--duration", "20", "--log-rate", "50"});
