@@ -4,13 +4,18 @@
 // subcommand's JSON is checked against the published numbers of Kimura et al. 2019.
 // The option parser and JSON writer shared by all subcommands are also tested in-process.
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -217,6 +222,48 @@ TEST_F(SphereSimTest, UnreadableConfigOrOutputIsInvalidInput) {
            SPHERICAL_ROBOTS_SOURCE_DIR, "--out", unwritable.string()});
   EXPECT_EQ(no_dir.status, cli::kInvalidInput);
   EXPECT_NE(no_dir.err.find("missing_dir"), std::string::npos) << no_dir.err;
+}
+
+// --out names a device or a pipe (/dev/null, /dev/stdout, a named pipe): the rows go into it and
+// it stays what it was. Writing a temporary file and renaming it over the path, as for a regular
+// file, replaced root's /dev/null with a regular file (found in a benchmark run; this test uses a
+// named pipe, which the old code replaced the same way, so that a regression cannot break the
+// machine's /dev/null).
+TEST_F(SphereSimTest, OutputIntoANamedPipeLeavesThePipeInPlace) {
+  const fs::path pipe = dir_ / "rows.fifo";
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0) << std::strerror(errno);
+  // The read end, open before sphere_sim writes: a 1 s run's rows (about 3 kB) fit in the pipe's
+  // buffer, so no reader has to run beside it, and a sphere_sim that never opens the pipe cannot
+  // make this test wait.
+  const int read_end = ::open(pipe.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(read_end, 0) << std::strerror(errno);
+  const Process process = run({"terrain", "--robot", "3R", "--path", "circle", "--duration", "1",
+                               "--config", SPHERICAL_ROBOTS_SOURCE_DIR, "--out", pipe.string()});
+  std::string received;
+  char chunk[4096];
+  for (ssize_t n; (n = ::read(read_end, chunk, sizeof chunk)) > 0;) received.append(chunk, n);
+  ::close(read_end);
+  ASSERT_EQ(process.status, 0) << process.err;
+  EXPECT_TRUE(fs::is_fifo(fs::symlink_status(pipe))) << "the named pipe was replaced";
+  EXPECT_EQ(received.rfind("t,x0,y0,", 0), 0u) << received.substr(0, 80);
+  EXPECT_EQ(std::count(received.begin(), received.end(), '\n'), 12);  // header, t = 0 .. 1 s
+  for (const auto& entry : fs::directory_iterator(dir_)) {
+    EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos)
+        << "left behind: " << entry.path();
+  }
+}
+
+// --out names a symbolic link: the file it names gets the rows, and the link stays a link.
+TEST_F(SphereSimTest, OutputThroughASymbolicLinkWritesTheFileItNames) {
+  fs::create_directory(dir_ / "data");
+  const fs::path link = dir_ / "latest.csv";
+  fs::create_symlink(dir_ / "data" / "run.csv", link);
+  const Process process = run({"terrain", "--robot", "3R", "--path", "circle", "--duration", "1",
+                               "--config", SPHERICAL_ROBOTS_SOURCE_DIR, "--out", link.string()});
+  ASSERT_EQ(process.status, 0) << process.err;
+  EXPECT_TRUE(fs::is_symlink(link)) << "the link was replaced by a file";
+  ASSERT_TRUE(fs::is_regular_file(dir_ / "data" / "run.csv"));
+  EXPECT_EQ(readCsv(dir_ / "data" / "run.csv").rows.size(), 11u);
 }
 
 // --- help --------------------------------------------------------------------------------------

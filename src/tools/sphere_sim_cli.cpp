@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -99,6 +100,8 @@ subcommands:
 Run 'sphere_sim SUBCOMMAND --help' for its options and output. An option's value is the next
 argument even if it begins with '-' (--target -0.15,-0.25,7); --name=VALUE works too. Lists
 are comma-separated. nan and inf parse but are rejected as invalid input.
+--out FILE appears only when the run succeeds (it is written beside and renamed); a symbolic
+link's target is written, and a device or pipe (/dev/null, /dev/stdout) is written directly.
 Exit status: 0 success; 2 usage error (unknown option, malformed value, missing option);
 3 well-posed problem without a solution (output written); 4 invalid or degenerate input
 (one-line error on stderr, no output file).
@@ -353,15 +356,40 @@ std::string configDirectory(const ParsedOptions& options) {
   return options.given("config") ? options.text("config") : config::packageShareDirectory();
 }
 
+namespace {
+
+// Where the temporary file is renamed to: path, or the file a symbolic link at path names (a
+// rename onto the link would replace the link); empty if path exists and is not a regular file.
+std::string renameTarget(const std::string& path) {
+  std::error_code error;
+  const std::filesystem::file_status target = std::filesystem::status(path, error);
+  if (std::filesystem::exists(target) && !std::filesystem::is_regular_file(target)) return {};
+  if (!std::filesystem::is_symlink(std::filesystem::symlink_status(path, error))) return path;
+  // The link's target need not exist yet, where weakly_canonical(path) would not follow the link.
+  std::filesystem::path target_path = std::filesystem::read_symlink(path, error);
+  if (error) return path;
+  if (target_path.is_relative()) {
+    target_path = std::filesystem::path(path).parent_path() / target_path;
+  }
+  const std::filesystem::path resolved = std::filesystem::weakly_canonical(target_path, error);
+  return error ? path : resolved.string();
+}
+
+}  // namespace
+
 OutputFile::OutputFile(std::string path)
-    : path_(std::move(path)),
-      temporary_path_(path_ + ".partial-" + std::to_string(::getpid())),
+    : path_(std::move(path)), rename_path_(renameTarget(path_)),
       buffer_(new char[kOutputBufferBytes]) {
+  if (!rename_path_.empty()) {
+    temporary_path_ = rename_path_ + ".partial-" + std::to_string(::getpid());
+  }
+  const bool direct = rename_path_.empty();
   // The buffer must be installed before open() for libstdc++ to use it.
   stream_.rdbuf()->pubsetbuf(buffer_.get(), kOutputBufferBytes);
-  stream_.open(temporary_path_, std::ios::binary | std::ios::trunc);
+  stream_.open(direct ? path_ : temporary_path_, std::ios::binary | std::ios::trunc);
   if (!stream_) {
-    throw InvalidInput("--out " + path_ + ": cannot create " + temporary_path_ + ": " +
+    throw InvalidInput("--out " + path_ + ": cannot " +
+                       (direct ? std::string("open it") : "create " + temporary_path_) + ": " +
                        std::strerror(errno));
   }
 }
@@ -369,7 +397,7 @@ OutputFile::OutputFile(std::string path)
 OutputFile::~OutputFile() {
   if (committed_) return;
   stream_.close();
-  std::remove(temporary_path_.c_str());
+  if (!temporary_path_.empty()) std::remove(temporary_path_.c_str());
 }
 
 void OutputFile::commit() {
@@ -377,7 +405,7 @@ void OutputFile::commit() {
   const bool written = static_cast<bool>(stream_);
   stream_.close();
   if (!written || !stream_) throw std::runtime_error("--out " + path_ + ": writing failed");
-  if (std::rename(temporary_path_.c_str(), path_.c_str()) != 0) {
+  if (!rename_path_.empty() && std::rename(temporary_path_.c_str(), rename_path_.c_str()) != 0) {
     throw std::runtime_error("--out " + path_ + ": cannot rename " + temporary_path_ +
                              " to it: " + std::strerror(errno));
   }

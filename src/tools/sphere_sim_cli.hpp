@@ -135,10 +135,14 @@ long wholeSteps(double span, double step, const std::string& what);
 double radiusFromUrdf(const std::string& path, const std::string& link);
 
 /// An output file that appears under its name only when committed: it is written to a temporary
-/// file beside it and renamed, so a run that fails half-way (exit 4) leaves no file behind.
+/// file beside it and renamed, so a run that fails half-way (exit 4) leaves no file behind. A path
+/// that names a symbolic link is resolved first (the link stays a link). A path that exists and is
+/// not a regular file (/dev/null, /dev/stdout, a named pipe) is written directly: renaming a file
+/// over it would replace the device or pipe itself.
 class OutputFile {
  public:
-  /// @throw InvalidInput naming the path if the temporary file cannot be created.
+  /// @throw InvalidInput naming the path if it (a device or pipe) or the temporary file cannot be
+  /// opened.
   explicit OutputFile(std::string path);
   ~OutputFile();
   OutputFile(const OutputFile&) = delete;
@@ -150,7 +154,8 @@ class OutputFile {
   void commit();
 
  private:
-  std::string path_;
+  std::string path_;          ///< as given
+  std::string rename_path_;   ///< path_, or the file its symbolic link names; empty: written directly
   std::string temporary_path_;
   std::unique_ptr<char[]> buffer_;  // a large buffer: rows are written without per-row flushes
   std::ofstream stream_;
