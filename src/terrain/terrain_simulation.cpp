@@ -32,7 +32,8 @@ TerrainState checkedResult(const TerrainKinematics& kinematics, const OdeState& 
 TerrainSimulation::TerrainSimulation(const TerrainKinematics& kinematics,
                                      const PursuitController& controller,
                                      const ReferencePath& path, const TerrainState& initial)
-    : kinematics_(kinematics), controller_(controller), path_(path),
+    : kinematics_(kinematics), controller_(controller),
+      smooth_controller_(dynamic_cast<const SmoothPursuitController*>(&controller)), path_(path),
       velocity_window_(controller.velocityWindow()), reads_zeta_(controller.readsZeta()),
       state_(kinematics.constrain(initial)) {
   if (controller.type() != kinematics.type()) {
@@ -45,16 +46,10 @@ TerrainSimulation::TerrainSimulation(const TerrainKinematics& kinematics,
 TerrainSample TerrainSimulation::evaluate(const TerrainState& state, double t) const {
   TerrainSample sample{t, state, kinematics_.geometry(state), desiredAt(t), {}, {}};
   sample.error = trackingError(sample.geometry, sample.desired.position);
-  sample.rates = realisedCommand(state, sample.geometry, sample.error, sample.desired);
+  sample.rates = kinematics_.realisedRates(
+      state, controller_.command(sample.geometry, state.phi, sample.error,
+                                 sample.desired.velocity));
   return sample;
-}
-
-DriveRates TerrainSimulation::realisedCommand(const TerrainState& state,
-                                              const ContactGeometry& geometry,
-                                              const TrackingError& error,
-                                              const DesiredPoint& desired) const {
-  return kinematics_.realisedRates(
-      state, controller_.command(geometry, state.phi, error, desired.velocity));
 }
 
 const DesiredPoint& TerrainSimulation::desiredAt(double t) const {
@@ -70,15 +65,28 @@ const DesiredPoint& TerrainSimulation::desiredAt(double t) const {
 
 void TerrainSimulation::step(double dt) {
   requirePositive(dt, "integration step dt [s]");
+  if (smooth_controller_ != nullptr) {
+    advance(*smooth_controller_, dt);
+  } else {
+    advance(controller_, dt);
+  }
+}
+
+// Flattened: everything the four RK stages call that GCC can see is inlined into one function,
+// as the stages of a hand-written loop would be. GCC's size limits otherwise leave the heading
+// frame and the smooth law out of line, and their inputs and results then go through memory on
+// the serial chain of operations from one stage to the next.
+template <typename Controller>
+void TerrainSimulation::advance(const Controller& controller, double dt) {
   // The controller runs inside the vector field, so it is evaluated at every RK stage: evaluate()
   // without assembling the whole sample, which 160,000 stages a run do not need.
-  const auto closed_loop = [this](const OdeState& x, OdeState& dxdt, double t) {
+  const auto closed_loop = [this, &controller](const OdeState& x, OdeState& dxdt, double t) {
     const TerrainState state = fromOde(x);
     const ContactGeometry geometry = kinematics_.geometry(state);
     const DesiredPoint& desired = desiredAt(t);
-    const DriveRates rates = realisedCommand(
-        state, geometry, trackingError(geometry, desired.position, reads_zeta_),
-        desired);
+    const TrackingError error = trackingError(geometry, desired.position, reads_zeta_);
+    const DriveRates rates = kinematics_.realisedRates(
+        state, controller.command(geometry, state.phi, error, desired.velocity));
     dxdt = toOde(kinematics_.realisedStateRate(state, geometry, rates));
   };
   OdeState x = toOde(state_);
