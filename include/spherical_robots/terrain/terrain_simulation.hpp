@@ -1,6 +1,6 @@
 #pragma once
-// Closed-loop batch run of a terrain robot: classical fixed-step RK4 (Boost.Odeint) with the
-// tracking law (paper or smooth) evaluated at every stage (continuous-time feedback).
+// Closed-loop batch run of a terrain robot: classical fixed-step RK4 (Boost.Odeint's sums, written
+// out) with the tracking law (paper or smooth) evaluated at every stage (continuous-time feedback).
 
 #include <Eigen/Geometry>
 #include <array>
@@ -43,8 +43,7 @@ class TerrainSimulation {
 
  private:
   /// p_d(t) with the velocity the controller wants (over its window), remembered for
-  /// the two latest times: RK4 asks for t + dt/2 twice and for t + dt again at the next step's
-  /// start.
+  /// the two latest times: a step's end is the next step's start (and sample()'s time).
   const DesiredPoint& desiredAt(double t) const;
   /// One RK4 step of dt [s] with `controller`: controller_ itself, or controller_ as its final
   /// class, whose command() the RK stages then call directly and may inline.
