@@ -89,12 +89,13 @@ double combine(double x, double b1, double k1, double b2, double k2, double b3, 
 
 // Classical RK4, with the sums and stage times of Boost.Odeint's runge_kutta4 (which stepped
 // this loop before and still steps stepWithHeldRates), so the run's figures are unchanged to the
-// bit: odeint also adds 0 times the earlier stages' rates, which changes no value (this loop's
-// state starts at +0 and a sum never turns +0 into -0). Written out, the three desired points of
-// the step are looked up before its four stages, which are then straight-line arithmetic without
-// a call: flattened, GCC inlines into this function everything they call that it can see (its
-// size limits otherwise leave the heading frame and the smooth law out of line), so their inputs
-// and results stay in registers along the serial chain of operations from one stage to the next.
+// bit: odeint also adds 0 times the earlier stages' rates, which changes no value but the sign of
+// a state entry that is -0 (sphere_sim's runs start at +0, and a sum never turns +0 into -0).
+// Written out, the three desired points of the step are looked up before its four stages, which
+// are then straight-line arithmetic without a call: flattened, GCC inlines into this function
+// everything they call that it can see (its size limits otherwise leave the heading frame and the
+// smooth law out of line), so their inputs and results stay in registers along the serial chain
+// of operations from one stage to the next.
 template <typename Controller>
 void TerrainSimulation::advance(const Controller& controller, double dt) {
   const double half_dt = 0.5 * dt;
