@@ -72,30 +72,13 @@ void TerrainSimulation::step(double dt) {
   }
 }
 
-namespace {
-
-/// x + h k: the state at which a stage of RK4 evaluates the field.
-TerrainState along(const TerrainState& x, double h, const TerrainStateRate& k) {
-  return {x.x + h * k.x_dot, x.y + h * k.y_dot, x.psi + h * k.psi_dot, x.phi + h * k.phi_dot};
-}
-
-/// x + b1 k1 + b2 k2 + b3 k3 + b4 k4, summed left to right.
-double combine(double x, double b1, double k1, double b2, double k2, double b3, double k3,
-               double b4, double k4) {
-  return x + b1 * k1 + b2 * k2 + b3 * k3 + b4 * k4;
-}
-
-}  // namespace
-
-// Classical RK4, with the sums and stage times of Boost.Odeint's runge_kutta4 (which stepped
-// this loop before and still steps stepWithHeldRates), so the run's figures are unchanged to the
-// bit: odeint also adds 0 times the earlier stages' rates, which changes no value but the sign of
-// a state entry that is -0 (sphere_sim's runs start at +0, and a sum never turns +0 into -0).
-// Written out, the three desired points of the step are looked up before its four stages, which
-// are then straight-line arithmetic without a call: flattened, GCC inlines into this function
-// everything they call that it can see (its size limits otherwise leave the heading frame and the
-// smooth law out of line), so their inputs and results stay in registers along the serial chain
-// of operations from one stage to the next.
+// Boost.Odeint's classical RK4 with the step's three desired points looked up before its four
+// stages, which are then straight-line arithmetic without a call: flattened, GCC inlines into
+// this function everything they call that it can see (its size limits otherwise leave the
+// heading frame and the smooth law out of line), so their inputs and results stay in registers
+// along the serial chain of operations from one stage to the next. Before, a desired point not
+// yet cached was computed inside a stage, and every value live across that call went through
+// memory.
 template <typename Controller>
 void TerrainSimulation::advance(const Controller& controller, double dt) {
   const double half_dt = 0.5 * dt;
@@ -113,18 +96,17 @@ void TerrainSimulation::advance(const Controller& controller, double dt) {
         state, controller.command(geometry, state.phi, error, desired.velocity));
     return kinematics_.realisedStateRate(state, geometry, rates);
   };
-  const TerrainState& x = state_;
-  const TerrainStateRate k1 = closed_loop(x, start);
-  const TerrainStateRate k2 = closed_loop(along(x, half_dt, k1), middle);
-  const TerrainStateRate k3 = closed_loop(along(x, half_dt, k2), middle);
-  const TerrainStateRate k4 = closed_loop(along(x, dt, k3), end);
-  const double sixth = (1.0 / 6.0) * dt;
-  const double third = (1.0 / 3.0) * dt;
-  const OdeState next = {
-      combine(x.x, sixth, k1.x_dot, third, k2.x_dot, third, k3.x_dot, sixth, k4.x_dot),
-      combine(x.y, sixth, k1.y_dot, third, k2.y_dot, third, k3.y_dot, sixth, k4.y_dot),
-      combine(x.psi, sixth, k1.psi_dot, third, k2.psi_dot, third, k3.psi_dot, sixth, k4.psi_dot),
-      combine(x.phi, sixth, k1.phi_dot, third, k2.phi_dot, third, k3.phi_dot, sixth, k4.phi_dot)};
+  // odeint asks for the field at t_, at t_ + dt/2 twice and at t_ + dt: the same doubles (any
+  // other time would be looked up as before).
+  const auto field = [&](const OdeState& x, OdeState& dxdt, double t) {
+    const DesiredPoint& desired = t == t_             ? start
+                                  : t == t_ + half_dt ? middle
+                                  : t == t_ + dt      ? end
+                                                      : desiredAt(t);
+    dxdt = toOde(closed_loop(fromOde(x), desired));
+  };
+  OdeState next = toOde(state_);
+  Stepper().do_step(field, next, t_, dt);
   const double increment = dt - t_compensation_;
   const double next_t = t_ + increment;
   t_compensation_ = (next_t - t_) - increment;

@@ -174,9 +174,7 @@ inline ContactGeometry TerrainKinematics::geometry(const TerrainState& state) co
 inline DriveRates TerrainKinematics::realisedRates(const TerrainState& state,
                                                    const DriveRates& commanded) const {
   terrain_kinematics_detail::requireFinite(commanded);
-  DriveRates realised{actuated_[0] ? commanded.roll_rate : 0.0,
-                      actuated_[1] ? commanded.lateral_rate : 0.0,
-                      actuated_[2] ? commanded.turn_rate : 0.0};  // keepActuated(type_, ...)
+  DriveRates realised = keepActuated(actuated_, commanded);
   if (type_ == RobotType::RollingAndSteering) {
     const bool pushing_past_limit = (state.phi >= tilt_limit_ && realised.lateral_rate > 0.0) ||
                                     (state.phi <= -tilt_limit_ && realised.lateral_rate < 0.0);

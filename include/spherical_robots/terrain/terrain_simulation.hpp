@@ -1,6 +1,6 @@
 #pragma once
-// Closed-loop batch run of a terrain robot: classical fixed-step RK4 (Boost.Odeint's sums, written
-// out) with the tracking law (paper or smooth) evaluated at every stage (continuous-time feedback).
+// Closed-loop batch run of a terrain robot: classical fixed-step RK4 (Boost.Odeint) with the
+// tracking law (paper or smooth) evaluated at every stage (continuous-time feedback).
 
 #include <Eigen/Geometry>
 #include <array>
