@@ -25,9 +25,7 @@ std::array<const char*, 3> rateNames(RobotType type) {
 }
 
 DriveRates keepActuated(RobotType type, const DriveRates& rates) {
-  const std::array<bool, 3> actuated = actuatedRates(type);
-  return {actuated[0] ? rates.roll_rate : 0.0, actuated[1] ? rates.lateral_rate : 0.0,
-          actuated[2] ? rates.turn_rate : 0.0};
+  return keepActuated(actuatedRates(type), rates);
 }
 
 namespace {

@@ -1,5 +1,4 @@
 #include "spherical_robots/terrain/surface.hpp"
-#include "spherical_robots/core/sin_cos.hpp"
 #include "spherical_robots/core/validation.hpp"
 
 #include <Eigen/LU>
@@ -13,19 +12,6 @@ CosineSurface::CosineSurface(double amplitude, double frequency)
     : amplitude_(amplitude), frequency_(frequency) {
   requireFinite(amplitude, "cosine surface: amplitude [m]");
   requirePositive(frequency, "cosine surface: frequency [rad/m]");
-}
-
-// Eq 59 and its derivatives.
-SurfacePoint CosineSurface::evaluate(double x, double y) const {
-  const auto [along_x, along_y] = sinCos(frequency_ * x, frequency_ * y);
-  const double slope = -amplitude_ * frequency_;
-  const double curvature = slope * frequency_;
-  SurfacePoint point;
-  point.height = amplitude_ * (along_x.cos + along_y.cos - 2.0);
-  point.gradient = slope * Eigen::Vector2d(along_x.sin, along_y.sin);
-  point.hessian(0, 0) = curvature * along_x.cos;
-  point.hessian(1, 1) = curvature * along_y.cos;
-  return point;
 }
 
 // The Hessian's largest eigenvalue, |a| w^2, is reached where the gradient vanishes, so it is

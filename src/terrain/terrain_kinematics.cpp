@@ -10,54 +10,34 @@
 #include "spherical_robots/terrain/tangent_frame.hpp"
 
 namespace spherical_robots::terrain {
-namespace {
+namespace terrain_kinematics_detail {
 
-// The messages are built out of line, so the checks, made at every RK stage, stay a few compares.
-[[noreturn]] void rejectState(const TerrainState& state) {
+void rejectState(const TerrainState& state) {
   std::ostringstream message;
   message << "terrain kinematics: state is not finite (x=" << state.x << ", y=" << state.y
           << ", psi=" << state.psi << ", phi=" << state.phi << ")";
   throw std::invalid_argument(message.str());
 }
 
-[[noreturn]] void rejectRates(const DriveRates& rates) {
+void rejectRates(const DriveRates& rates) {
   std::ostringstream message;
   message << "terrain kinematics: drive rates are not finite (roll=" << rates.roll_rate
           << ", lateral=" << rates.lateral_rate << ", turn=" << rates.turn_rate << ")";
   throw std::invalid_argument(message.str());
 }
 
-void requireFinite(const TerrainState& state) {
-  if (!allFinite(state.x, state.y, state.psi, state.phi)) {
-    rejectState(state);
-  }
-}
-
-void requireFinite(const DriveRates& rates) {
-  if (!allFinite(rates.roll_rate, rates.lateral_rate, rates.turn_rate)) {
-    rejectRates(rates);
-  }
-}
-
-}  // namespace
+}  // namespace terrain_kinematics_detail
 
 TerrainKinematics::TerrainKinematics(const Surface& surface, RobotType type, double radius,
                                      ContactModel model, double tilt_limit)
-    : surface_(surface), type_(type), radius_(radius), model_(model), tilt_limit_(tilt_limit) {
+    : surface_(surface), cosine_surface_(dynamic_cast<const CosineSurface*>(&surface)),
+      type_(type), actuated_(actuatedRates(type)), radius_(radius), model_(model),
+      tilt_limit_(tilt_limit) {
   requireSinglePointContact(surface, radius);
   if (!std::isfinite(tilt_limit) || tilt_limit <= 0.0 || tilt_limit >= M_PI / 2.0) {
     throw std::invalid_argument("RS tilt limit must be in (0, pi/2) rad, got " +
                                 std::to_string(tilt_limit));
   }
-}
-
-ContactGeometry contactGeometry(const Surface& surface, double radius, const TerrainState& state) {
-  requireFinite(state);
-  const SurfacePoint point = surface.evaluate(state.x, state.y);
-  ContactGeometry geometry{Eigen::Vector3d(state.x, state.y, point.height), Eigen::Vector3d(),
-                           headingFrame(point.gradient, state.psi), point.gradient, point.hessian};
-  geometry.centre = geometry.contact_point + radius * geometry.heading_frame.col(2);  // eq 51
-  return geometry;
 }
 
 // With N = (-f_x, -f_y, 1): dn/dx_j = (I - n n^T) dN/dx_j / |N|.
@@ -77,23 +57,6 @@ Eigen::Matrix<double, 3, 2> centreJacobian(const ContactGeometry& geometry, doub
   return contact_jacobian + radius * normalJacobian(geometry);
 }
 
-ContactGeometry TerrainKinematics::geometry(const TerrainState& state) const {
-  return contactGeometry(surface_, radius_, state);
-}
-
-DriveRates TerrainKinematics::realisedRates(const TerrainState& state,
-                                            const DriveRates& commanded) const {
-  requireFinite(commanded);
-  DriveRates realised = keepActuated(type_, commanded);
-  if (type_ == RobotType::RollingAndSteering) {
-    const bool pushing_past_limit = (state.phi >= tilt_limit_ && realised.lateral_rate > 0.0) ||
-                                    (state.phi <= -tilt_limit_ && realised.lateral_rate < 0.0);
-    if (pushing_past_limit) realised.lateral_rate = 0.0;
-    realised.turn_rate = -realised.roll_rate * std::sin(state.phi);  // eq 44
-  }
-  return realised;
-}
-
 TerrainStateRate TerrainKinematics::stateRate(const TerrainState& state,
                                               const DriveRates& commanded) const {
   return stateRate(state, geometry(state), commanded);
@@ -105,25 +68,10 @@ TerrainStateRate TerrainKinematics::stateRate(const TerrainState& state,
   return realisedStateRate(state, geometry, realisedRates(state, commanded));
 }
 
-TerrainStateRate TerrainKinematics::realisedStateRate(const TerrainState& state,
-                                                      const ContactGeometry& geometry,
-                                                      const DriveRates& rates) const {
-  // Eqs 33 and 48: the rolling velocity in F_L.
-  const double forward = type_ == RobotType::RollingAndSteering
-                             ? radius_ * rates.roll_rate * std::cos(state.phi)
-                             : radius_ * rates.roll_rate;
-  const double leftward = -radius_ * rates.lateral_rate;
-  const Eigen::Matrix3d& frame = geometry.heading_frame;
-  const Eigen::Vector3d velocity = forward * frame.col(0) + leftward * frame.col(1);  // eq 28
-
-  TerrainStateRate rate;
-  rate.psi_dot = rates.turn_rate;
-  rate.phi_dot = type_ == RobotType::RollingAndSteering ? rates.lateral_rate : 0.0;
-  if (model_ == ContactModel::Paper) {
-    rate.x_dot = velocity.x();
-    rate.y_dot = velocity.y();
-    return rate;
-  }
+TerrainStateRate TerrainKinematics::rollingStateRate(const TerrainState& state,
+                                                     const ContactGeometry& geometry,
+                                                     const Eigen::Vector3d& velocity,
+                                                     TerrainStateRate rate) const {
   // Rolling: velocity is the centre's; solve [dC/dx dC/dy] (x', y') = velocity, which lies in
   // the tangent plane like both columns.
   const Eigen::Matrix<double, 3, 2> jacobian = centreJacobian(geometry, radius_);
@@ -140,7 +88,8 @@ TerrainStateRate TerrainKinematics::realisedStateRate(const TerrainState& state,
   rate.y_dot = contact_rate.y();
   // The minimal-rotation tangent frame turns about n at z . (n' x n) / (1 + n_z) as n changes;
   // psi, measured from it, must turn the other way for the heading to turn at turn_rate.
-  rate.psi_dot -= tangentFrameSpin(frame.col(2), normalJacobian(geometry) * contact_rate);
+  rate.psi_dot -=
+      tangentFrameSpin(geometry.heading_frame.col(2), normalJacobian(geometry) * contact_rate);
   return rate;
 }
 

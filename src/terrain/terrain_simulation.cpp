@@ -32,7 +32,8 @@ TerrainState checkedResult(const TerrainKinematics& kinematics, const OdeState& 
 TerrainSimulation::TerrainSimulation(const TerrainKinematics& kinematics,
                                      const PursuitController& controller,
                                      const ReferencePath& path, const TerrainState& initial)
-    : kinematics_(kinematics), controller_(controller), path_(path),
+    : kinematics_(kinematics), controller_(controller),
+      smooth_controller_(dynamic_cast<const SmoothPursuitController*>(&controller)), path_(path),
       velocity_window_(controller.velocityWindow()), reads_zeta_(controller.readsZeta()),
       state_(kinematics.constrain(initial)) {
   if (controller.type() != kinematics.type()) {
@@ -45,16 +46,10 @@ TerrainSimulation::TerrainSimulation(const TerrainKinematics& kinematics,
 TerrainSample TerrainSimulation::evaluate(const TerrainState& state, double t) const {
   TerrainSample sample{t, state, kinematics_.geometry(state), desiredAt(t), {}, {}};
   sample.error = trackingError(sample.geometry, sample.desired.position);
-  sample.rates = realisedCommand(state, sample.geometry, sample.error, sample.desired);
+  sample.rates = kinematics_.realisedRates(
+      state, controller_.command(sample.geometry, state.phi, sample.error,
+                                 sample.desired.velocity));
   return sample;
-}
-
-DriveRates TerrainSimulation::realisedCommand(const TerrainState& state,
-                                              const ContactGeometry& geometry,
-                                              const TrackingError& error,
-                                              const DesiredPoint& desired) const {
-  return kinematics_.realisedRates(
-      state, controller_.command(geometry, state.phi, error, desired.velocity));
 }
 
 const DesiredPoint& TerrainSimulation::desiredAt(double t) const {
@@ -70,24 +65,53 @@ const DesiredPoint& TerrainSimulation::desiredAt(double t) const {
 
 void TerrainSimulation::step(double dt) {
   requirePositive(dt, "integration step dt [s]");
+  if (smooth_controller_ != nullptr) {
+    advance(*smooth_controller_, dt);
+  } else {
+    advance(controller_, dt);
+  }
+}
+
+// Boost.Odeint's classical RK4 with the step's three desired points looked up before its four
+// stages, which are then straight-line arithmetic without a call: flattened, GCC inlines into
+// this function everything they call that it can see (its size limits otherwise leave the
+// heading frame and the smooth law out of line), so their inputs and results stay in registers
+// along the serial chain of operations from one stage to the next. Before, a desired point not
+// yet cached was computed inside a stage, and every value live across that call went through
+// memory.
+template <typename Controller>
+void TerrainSimulation::advance(const Controller& controller, double dt) {
+  const double half_dt = 0.5 * dt;
+  // Copies: the cache holds two points, the step needs three.
+  const DesiredPoint start = desiredAt(t_);
+  const DesiredPoint middle = desiredAt(t_ + half_dt);
+  const DesiredPoint end = desiredAt(t_ + dt);
   // The controller runs inside the vector field, so it is evaluated at every RK stage: evaluate()
   // without assembling the whole sample, which 160,000 stages a run do not need.
-  const auto closed_loop = [this](const OdeState& x, OdeState& dxdt, double t) {
-    const TerrainState state = fromOde(x);
+  const auto closed_loop = [this, &controller](const TerrainState& state,
+                                               const DesiredPoint& desired) {
     const ContactGeometry geometry = kinematics_.geometry(state);
-    const DesiredPoint& desired = desiredAt(t);
-    const DriveRates rates = realisedCommand(
-        state, geometry, trackingError(geometry, desired.position, reads_zeta_),
-        desired);
-    dxdt = toOde(kinematics_.realisedStateRate(state, geometry, rates));
+    const TrackingError error = trackingError(geometry, desired.position, reads_zeta_);
+    const DriveRates rates = kinematics_.realisedRates(
+        state, controller.command(geometry, state.phi, error, desired.velocity));
+    return kinematics_.realisedStateRate(state, geometry, rates);
   };
-  OdeState x = toOde(state_);
-  Stepper().do_step(closed_loop, x, t_, dt);
+  // odeint asks for the field at t_, at t_ + dt/2 twice and at t_ + dt: the same doubles (any
+  // other time would be looked up as before).
+  const auto field = [&](const OdeState& x, OdeState& dxdt, double t) {
+    const DesiredPoint& desired = t == t_             ? start
+                                  : t == t_ + half_dt ? middle
+                                  : t == t_ + dt      ? end
+                                                      : desiredAt(t);
+    dxdt = toOde(closed_loop(fromOde(x), desired));
+  };
+  OdeState next = toOde(state_);
+  Stepper().do_step(field, next, t_, dt);
   const double increment = dt - t_compensation_;
   const double next_t = t_ + increment;
   t_compensation_ = (next_t - t_) - increment;
   t_ = next_t;
-  state_ = checkedResult(kinematics_, x, t_);
+  state_ = checkedResult(kinematics_, next, t_);
 }
 
 TerrainSample TerrainSimulation::sample() const { return evaluate(state_, t_); }

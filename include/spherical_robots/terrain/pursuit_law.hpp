@@ -3,9 +3,12 @@
 // 53-54, and the interface through which the batch run and the controller node drive either.
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "spherical_robots/core/enum_names.hpp"
+#include "spherical_robots/core/validation.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
 #include "spherical_robots/terrain/robot_type.hpp"
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
@@ -39,8 +42,8 @@ struct TrackingError {
 /// e_t, |e_t| and, if with_zeta, zeta (otherwise left 0: its atan2 is a fifth of a closed-loop
 /// stage, wasted on a law that does not read it, PursuitController::readsZeta).
 /// @throw std::invalid_argument on a non-finite desired point.
-TrackingError trackingError(const ContactGeometry& geometry, const Eigen::Vector3d& desired,
-                            bool with_zeta = true);
+inline TrackingError trackingError(const ContactGeometry& geometry,
+                                   const Eigen::Vector3d& desired, bool with_zeta = true);
 
 /// A tracking law for one robot type. Stateless: the command is a function of the robot's state
 /// and the reference at one instant, so the batch run can evaluate it at every RK stage.
@@ -66,5 +69,32 @@ class PursuitController {
                              const TrackingError& error,
                              const Eigen::Vector3d& desired_velocity) const = 0;
 };
+
+// Inline: the closed loop takes the error at every RK stage, where out of line it went through
+// memory on the chain of operations from one stage to the next.
+namespace pursuit_law_detail {
+/// @throw std::invalid_argument (out of line: the check stays a compare).
+[[noreturn]] void rejectDesiredPoint();
+}  // namespace pursuit_law_detail
+
+// Eq 53, and eq 54 signed: atan2 of e_t's components along l and h.
+inline TrackingError trackingError(const ContactGeometry& geometry,
+                                   const Eigen::Vector3d& desired, bool with_zeta) {
+  if (!allFinite(desired.x(), desired.y(), desired.z())) pursuit_law_detail::rejectDesiredPoint();
+  TrackingError result;
+  result.error = desired - geometry.contact_point;
+  result.norm = result.error.norm();
+  if (!with_zeta) return result;
+  const double along_heading = result.error.dot(geometry.heading_frame.col(0));
+  const double along_left = result.error.dot(geometry.heading_frame.col(1));
+  // Along n the direction in the plane is round-off, not information. hypot(a, b) is never below
+  // max(|a|, |b|), so the larger component alone settles the usual case without the slow hypot.
+  const double round_off = 1e-12 * result.norm;
+  if (std::max(std::abs(along_heading), std::abs(along_left)) > round_off ||
+      std::hypot(along_heading, along_left) > round_off) {
+    result.zeta = std::atan2(along_left, along_heading);
+  }
+  return result;
+}
 
 }  // namespace spherical_robots::terrain

@@ -45,6 +45,13 @@ std::array<const char*, 3> rateNames(RobotType type);
 /// The rates with every rate the type does not actuate set to 0 (RS turn_rate included).
 DriveRates keepActuated(RobotType type, const DriveRates& rates);
 
+/// The same with actuated = actuatedRates(type) looked up once (inline: the batch run's kinematics
+/// apply it at every RK stage).
+inline DriveRates keepActuated(const std::array<bool, 3>& actuated, const DriveRates& rates) {
+  return {actuated[0] ? rates.roll_rate : 0.0, actuated[1] ? rates.lateral_rate : 0.0,
+          actuated[2] ? rates.turn_rate : 0.0};
+}
+
 /// The names of the actuators the type has, in DriveRates order (the non-null rateNames()): the
 /// names on actuators/command and actuators/state, e.g. RT {"theta", "psi"}.
 std::vector<std::string> actuatorNames(RobotType type);

@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "spherical_robots/core/sin_cos.hpp"
+
 namespace spherical_robots::terrain {
 
 /// f, its gradient and its Hessian at one point.
@@ -42,7 +44,10 @@ class CosineSurface final : public Surface {
  public:
   /// @param amplitude a [m], @param frequency w [rad/m] > 0. @throw std::invalid_argument
   CosineSurface(double amplitude, double frequency);
-  SurfacePoint evaluate(double x, double y) const override;
+  /// Inline (below): called on a CosineSurface itself, as TerrainKinematics does at every RK
+  /// stage, it is inlined instead of returning its point through memory. (Declared inline here,
+  /// so that maxPrincipalCurvature stays the key function that places the vtable.)
+  inline SurfacePoint evaluate(double x, double y) const override;
   double maxPrincipalCurvature() const override;
   std::string describe() const override;
 
@@ -50,6 +55,19 @@ class CosineSurface final : public Surface {
   double amplitude_;
   double frequency_;
 };
+
+// Eq 59 and its derivatives.
+inline SurfacePoint CosineSurface::evaluate(double x, double y) const {
+  const auto [along_x, along_y] = sinCos(frequency_ * x, frequency_ * y);
+  const double slope = -amplitude_ * frequency_;
+  const double curvature = slope * frequency_;
+  SurfacePoint point;
+  point.height = amplitude_ * (along_x.cos + along_y.cos - 2.0);
+  point.gradient = slope * Eigen::Vector2d(along_x.sin, along_y.sin);
+  point.hessian(0, 0) = curvature * along_x.cos;
+  point.hessian(1, 1) = curvature * along_y.cos;
+  return point;
+}
 
 /// z = z0 + g_x x + g_y y: a horizontal plane (g = 0) or a tilted one.
 class PlaneSurface final : public Surface {

@@ -9,6 +9,7 @@
 
 #include "spherical_robots/terrain/pursuit_law.hpp"
 #include "spherical_robots/terrain/reference_path.hpp"
+#include "spherical_robots/terrain/smooth_pursuit.hpp"
 #include "spherical_robots/terrain/terrain_kinematics.hpp"
 
 namespace spherical_robots::terrain {
@@ -42,15 +43,17 @@ class TerrainSimulation {
 
  private:
   /// p_d(t) with the velocity the controller wants (over its window), remembered for
-  /// the two latest times: RK4 asks for t + dt/2 twice and for t + dt again at the next step's
-  /// start.
+  /// the two latest times: a step's end is the next step's start (and sample()'s time).
   const DesiredPoint& desiredAt(double t) const;
-  /// The controller's command for this error, as the robot at this state realises it.
-  DriveRates realisedCommand(const TerrainState& state, const ContactGeometry& geometry,
-                             const TrackingError& error, const DesiredPoint& desired) const;
+  /// One RK4 step of dt [s] with `controller`: controller_ itself, or controller_ as its final
+  /// class, whose command() the RK stages then call directly and may inline.
+  template <typename Controller>
+  [[gnu::flatten]] void advance(const Controller& controller, double dt);
 
   const TerrainKinematics& kinematics_;
   const PursuitController& controller_;
+  /// controller_ if it is the smooth law, nullptr otherwise.
+  const SmoothPursuitController* smooth_controller_;
   const ReferencePath& path_;
   // The controller's constants, read once instead of by a virtual call at every RK stage.
   VelocityWindow velocity_window_;
