@@ -8,9 +8,7 @@
 // the floor ends where the core's TerrainSimulation, built from those files, ends.
 
 #include <array>
-#include <charconv>
 #include <cmath>
-#include <cstdio>
 
 #include "spherical_robots/core/sin_cos.hpp"
 
